@@ -40,6 +40,18 @@ function(hwinterp_core_variant)
   # Only touch the header when it changed, so a re-configure rebuilds nothing.
   file(COPY_FILE ${HWINTERP_GENERATED_DIR}/${V_NAME}_cfg.h.tmp
        ${HWINTERP_GENERATED_DIR}/${V_NAME}_cfg.h ONLY_IF_DIFFERENT)
+  # The testbench's binding of the variant to its Verilated classes.
+  file(WRITE ${HWINTERP_GENERATED_DIR}/${V_NAME}_rtl.h.tmp
+    "// Generated from cmake/cores.cmake; do not edit.\n#pragma once\n\n"
+    "#include \"${V_NAME}_cfg.h\"\n#include \"V${V_NAME}_cc.h\"\n#include \"V${V_NAME}_sc.h\"\n\n"
+    "namespace hwinterp {\ntemplate <class Cfg>\nstruct RtlOf;  // the Verilated classes of a variant\n}\n\n"
+    "template <>\nstruct hwinterp::RtlOf<${V_NAME}_cfg> {\n"
+    "  using Cc = V${V_NAME}_cc;  // verilator --cc: the direct lockstep mode\n"
+    "  using Sc = V${V_NAME}_sc;  // verilator --sc: the SystemC mode\n};\n")
+  file(COPY_FILE ${HWINTERP_GENERATED_DIR}/${V_NAME}_rtl.h.tmp
+       ${HWINTERP_GENERATED_DIR}/${V_NAME}_rtl.h ONLY_IF_DIFFERENT)
+  set_property(GLOBAL APPEND PROPERTY HWINTERP_CORE_${V_CORE}_VARIANTS ${V_NAME})
+  set_property(GLOBAL APPEND PROPERTY HWINTERP_CORES ${V_CORE})
   string(REPLACE ";" " " params_line "${V_PARAMS}")
   file(APPEND ${HWINTERP_GENERATED_DIR}/variants.txt.in "${V_NAME} ${V_CORE} ${params_line}\n")
   set_property(GLOBAL APPEND PROPERTY HWINTERP_VARIANTS ${V_NAME})
@@ -47,8 +59,27 @@ function(hwinterp_core_variant)
   set_property(GLOBAL PROPERTY HWINTERP_VARIANT_${V_NAME}_GFLAGS "${gflags}")
 endfunction()
 
-# Called once after cores.cmake: publishes variants.txt for scripts/synth.sh.
+# Called once after cores.cmake: publishes variants.txt for scripts/synth.sh
+# and, per core, <core>_variants.h: an X-macro over the core's variants so the
+# testbench instantiates each one without a hand-kept list.
 function(hwinterp_finish_variants)
+  get_property(cores GLOBAL PROPERTY HWINTERP_CORES)
+  list(REMOVE_DUPLICATES cores)
+  foreach(core IN LISTS cores)
+    get_property(vs GLOBAL PROPERTY HWINTERP_CORE_${core}_VARIANTS)
+    set(body "// Generated from cmake/cores.cmake; do not edit.\n#pragma once\n\n"
+             "namespace hwinterp {\ntemplate <class Cfg>\nstruct RtlOf;  // the Verilated classes of a variant\n}\n\n")
+    set(xs "")
+    foreach(v IN LISTS vs)
+      string(APPEND body "#include \"${v}_rtl.h\"\n")
+      string(APPEND xs " X(${v})")
+    endforeach()
+    string(TOUPPER ${core} CORE)
+    string(APPEND body "\n#define HWINTERP_${CORE}_VARIANTS(X)${xs}\n")
+    file(WRITE ${HWINTERP_GENERATED_DIR}/${core}_variants.h.tmp "${body}")
+    file(COPY_FILE ${HWINTERP_GENERATED_DIR}/${core}_variants.h.tmp
+         ${HWINTERP_GENERATED_DIR}/${core}_variants.h ONLY_IF_DIFFERENT)
+  endforeach()
   file(COPY_FILE ${HWINTERP_GENERATED_DIR}/variants.txt.in
        ${HWINTERP_GENERATED_DIR}/variants.txt ONLY_IF_DIFFERENT)
 endfunction()

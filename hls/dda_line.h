@@ -23,7 +23,8 @@ class DdaLine {
   static constexpr int TIM_W = Cfg::TIM_W;
   static constexpr int FEED_W = Cfg::FEED_W;
   static_assert(AXES >= 1 && AXES <= 32, "AXES out of range");
-  static_assert(ACC_W >= 2 && ACC_W <= 62, "ACC_W out of range (the iteration count needs ACC_W+1 bits)");
+  static_assert(ACC_W >= 2 && ACC_W <= 62,
+                "ACC_W out of range (the iteration count needs ACC_W+1 bits)");
   static_assert(POS_W >= 2 && POS_W <= 64, "POS_W out of range");
   static constexpr int EXP_W = [] {  // $clog2(ACC_W + 1)
     int w = 0;
@@ -161,8 +162,7 @@ class DdaLine {
     int n = 0;
     for (int b = 0; b < ACC_W; ++b)
       if (any[b]) n = b + 1;
-    for (int i = 0; i < AXES; ++i)
-      buf_inc_q_[i] = n == 0 ? acc_t(0) : acc_t(mag[i] << (ACC_W - n));
+    for (int i = 0; i < AXES; ++i) buf_inc_q_[i] = n == 0 ? acc_t(0) : acc_t(mag[i] << (ACC_W - n));
     buf_exp_q_ = n;
     buf_half_q_ = in.half_preload;
   }

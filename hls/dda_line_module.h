@@ -48,9 +48,9 @@ SC_MODULE(DdaLineModule) {
     typename Core::Inputs in;
     in.rst_n = rst_ni.read();
     in.cmd_valid = cmd_valid_i.read();
-    const pin_t<AXES * ACC_W> delta = cmd_delta_i.read();
+    const pin_t<AXES* ACC_W> delta = cmd_delta_i.read();
     for (int i = 0; i < AXES; ++i)
-      in.cmd_delta[i] = delta.range(i * ACC_W + ACC_W - 1, i * ACC_W);
+      in.cmd_delta[i] = pin_field<AXES * ACC_W>(delta, i * ACC_W, ACC_W);
     in.feed = feed_i.read();
     in.half_preload = half_preload_i.read();
     in.timing.step_len = step_len_i.read();
@@ -63,8 +63,9 @@ SC_MODULE(DdaLineModule) {
     cmd_ready_o.write(o.cmd_ready);
     step_o.write(o.step);
     dir_o.write(o.dir);
-    pin_t<AXES * POS_W> pos = 0;
-    for (int i = 0; i < AXES; ++i) pos.range(i * POS_W + POS_W - 1, i * POS_W) = o.pos[i];
+    pin_t<AXES* POS_W> pos = 0;
+    for (int i = 0; i < AXES; ++i)
+      set_pin_field<AXES * POS_W>(pos, i * POS_W, POS_W, o.pos[i].to_uint64());
     pos_o.write(pos);
     busy_o.write(o.busy);
     done_o.write(o.done);

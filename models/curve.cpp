@@ -29,7 +29,10 @@ ExplicitCurve::ExplicitCurve(Fn f, Fn df, Fn ddf, double x0, double x1)
 }
 
 ArcCurve::ArcCurve(Vec2 center, double r, double angle0, double angle1)
-    : c_(std::move(center)), r_(r), a0_(angle0), sweep_(std::abs(angle1 - angle0)),
+    : c_(std::move(center)),
+      r_(r),
+      a0_(angle0),
+      sweep_(std::abs(angle1 - angle0)),
       sign_(angle1 >= angle0 ? 1.0 : -1.0) {
   if (!(r > 0)) throw std::invalid_argument("ArcCurve: radius must be positive");
   if (!(sweep_ > 0)) throw std::invalid_argument("ArcCurve: zero sweep");

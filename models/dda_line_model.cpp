@@ -36,32 +36,46 @@ uint64_t dda_steps_after(int64_t delta_i, int exponent, uint64_t k, Preload prel
   return static_cast<uint64_t>(num >> exponent);
 }
 
-std::vector<DdaMove> dda_line_moves(const LatticePoint& start, const std::vector<int64_t>& delta,
-                                    Preload preload) {
-  if (start.size() != delta.size())
-    throw std::invalid_argument("dda_line_moves: start and delta have different axis counts");
-  const int n = dda_exponent(delta);
-  const uint64_t iterations = dda_iterations(delta);
-  std::vector<DdaMove> moves;
-  std::vector<uint64_t> taken(delta.size(), 0);
-  LatticePoint at = start;
-  for (uint64_t k = 1; k <= iterations; ++k) {
-    DdaMove m{k, std::vector<int>(delta.size(), 0), {}};
+DdaMoveStream::DdaMoveStream(LatticePoint start, std::vector<int64_t> delta, Preload preload)
+    : delta_(std::move(delta)),
+      preload_(preload),
+      exponent_(dda_exponent(delta_)),
+      iterations_(dda_iterations(delta_)),
+      taken_(delta_.size(), 0),
+      at_(std::move(start)) {
+  if (at_.size() != delta_.size())
+    throw std::invalid_argument("DdaMoveStream: start and delta have different axis counts");
+}
+
+bool DdaMoveStream::next(DdaMove& move) {
+  while (k_ < iterations_) {
+    ++k_;
     bool any = false;
-    for (size_t i = 0; i < delta.size(); ++i) {
-      const uint64_t s = dda_steps_after(delta[i], n, k, preload);
-      if (s != taken[i]) {  // at most one step per axis and iteration: |d_i| < 2^n
-        taken[i] = s;
-        m.step[i] = delta[i] < 0 ? -1 : 1;
-        at[i] += m.step[i];
+    move.step.assign(delta_.size(), 0);
+    for (size_t i = 0; i < delta_.size(); ++i) {
+      const uint64_t s = dda_steps_after(delta_[i], exponent_, k_, preload_);
+      if (s != taken_[i]) {  // at most one step per axis and iteration: |d_i| < 2^n
+        taken_[i] = s;
+        move.step[i] = delta_[i] < 0 ? -1 : 1;
+        at_[i] += move.step[i];
         any = true;
       }
     }
     if (any) {
-      m.point = at;
-      moves.push_back(std::move(m));
+      move.iteration = k_;
+      move.point = at_;
+      return true;
     }
   }
+  return false;
+}
+
+std::vector<DdaMove> dda_line_moves(const LatticePoint& start, const std::vector<int64_t>& delta,
+                                    Preload preload) {
+  DdaMoveStream stream(start, delta, preload);
+  std::vector<DdaMove> moves;
+  DdaMove m;
+  while (stream.next(m)) moves.push_back(m);
   return moves;
 }
 

@@ -42,6 +42,26 @@ struct DdaMove {
   LatticePoint point;
 };
 
+// The moves of one command, one at a time: what the testbench scoreboard
+// compares the cores' step/dir outputs against without storing a whole line.
+class DdaMoveStream {
+ public:
+  DdaMoveStream(LatticePoint start, std::vector<int64_t> delta, Preload preload);
+  // The next move; false when the command has no more.
+  bool next(DdaMove& move);
+  const std::vector<int64_t>& delta() const { return delta_; }
+  Preload preload() const { return preload_; }
+
+ private:
+  std::vector<int64_t> delta_;
+  Preload preload_;
+  int exponent_;
+  uint64_t iterations_;
+  uint64_t k_ = 0;
+  std::vector<uint64_t> taken_;
+  LatticePoint at_;
+};
+
 // All moves of one command from `start`, in order.
 std::vector<DdaMove> dda_line_moves(const LatticePoint& start, const std::vector<int64_t>& delta,
                                     Preload preload);

@@ -85,8 +85,10 @@ std::string Args::help_text() const {
   for (const auto& name : order_) {
     const Spec& s = specs_.at(name);
     std::string left = "  --" + name + (s.is_flag ? "" : " " + s.metavar);
-    if (left.size() < 30) left.resize(30, ' ');
-    else left += "\n" + std::string(30, ' ');
+    if (left.size() < 30)
+      left.resize(30, ' ');
+    else
+      left += "\n" + std::string(30, ' ');
     os << left << s.help;
     if (s.default_value) os << " (default " << *s.default_value << ")";
     os << "\n";

@@ -36,7 +36,7 @@ class Args {
   bool help_requested() const { return help_; }
   std::string help_text() const;
 
-  bool has(const std::string& name) const;  // given on the command line or defaulted
+  bool has(const std::string& name) const;    // given on the command line or defaulted
   bool given(const std::string& name) const;  // given on the command line
   std::string str(const std::string& name) const;
   // Typed accessors: a value that does not parse or lies outside [lo, hi]

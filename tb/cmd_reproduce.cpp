@@ -16,14 +16,16 @@ namespace {
 
 int run_reproduce(int argc, char** argv, int first) {
   auto list = papers();
-  std::sort(list.begin(), list.end(), [](const Paper& a, const Paper& b) { return a.order < b.order; });
+  std::sort(list.begin(), list.end(),
+            [](const Paper& a, const Paper& b) { return a.order < b.order; });
   std::vector<std::string> keys{"all"};
   std::string key_help;
   for (const auto& p : list) {
     keys.push_back(p.key);
     key_help += "\n    " + p.key + ": " + p.title;
   }
-  Args args("reproduce", "Reproduce the papers' tables, the paper's figure beside ours." + key_help);
+  Args args("reproduce",
+            "Reproduce the papers' tables, the paper's figure beside ours." + key_help);
   args.option("paper", "KEY", "which paper (all, or one of the keys above)", "all");
   if (parse_or_help(args, argc, argv, first)) return kExitOk;
   const std::string which = args.choice("paper", keys);

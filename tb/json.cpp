@@ -33,11 +33,21 @@ void write_string(std::string& out, const std::string& s) {
   out += '"';
   for (const unsigned char c : s) {
     switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\r': out += "\\r"; break;
-      case '\t': out += "\\t"; break;
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\r':
+        out += "\\r";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
       default:
         if (c < 0x20) {
           char buf[8];
@@ -61,10 +71,18 @@ void newline(std::string& out, int indent, int depth) {
 
 void Json::write(std::string& out, int indent, int depth) const {
   switch (kind_) {
-    case Kind::kNull: out += "null"; break;
-    case Kind::kBool: out += b_ ? "true" : "false"; break;
-    case Kind::kInt: out += std::to_string(i_); break;
-    case Kind::kUint: out += std::to_string(u_); break;
+    case Kind::kNull:
+      out += "null";
+      break;
+    case Kind::kBool:
+      out += b_ ? "true" : "false";
+      break;
+    case Kind::kInt:
+      out += std::to_string(i_);
+      break;
+    case Kind::kUint:
+      out += std::to_string(u_);
+      break;
     case Kind::kReal: {
       if (!std::isfinite(d_)) {
         out += "null";
@@ -79,7 +97,9 @@ void Json::write(std::string& out, int indent, int depth) const {
       out += buf;
       break;
     }
-    case Kind::kString: write_string(out, s_); break;
+    case Kind::kString:
+      write_string(out, s_);
+      break;
     case Kind::kArray: {
       out += '[';
       // Arrays of scalars stay on one line: per-axis vectors read better that way.

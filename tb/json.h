@@ -28,8 +28,16 @@ class Json {
   Json(const char* s) : kind_(Kind::kString), s_(s) {}
   Json(std::string s) : kind_(Kind::kString), s_(std::move(s)) {}
 
-  static Json array() { Json j; j.kind_ = Kind::kArray; return j; }
-  static Json object() { Json j; j.kind_ = Kind::kObject; return j; }
+  static Json array() {
+    Json j;
+    j.kind_ = Kind::kArray;
+    return j;
+  }
+  static Json object() {
+    Json j;
+    j.kind_ = Kind::kObject;
+    return j;
+  }
   template <typename T>
   static Json array_of(const std::vector<T>& items) {
     Json j = array();
@@ -37,8 +45,8 @@ class Json {
     return j;
   }
 
-  Json& push(Json v);                           // array append
-  Json& set(const std::string& key, Json v);    // object insert or replace
+  Json& push(Json v);                         // array append
+  Json& set(const std::string& key, Json v);  // object insert or replace
   const Json* find(const std::string& key) const;
 
   Kind kind() const { return kind_; }

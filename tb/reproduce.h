@@ -13,7 +13,7 @@
 namespace hwinterp::cli {
 
 struct PaperReproduction {
-  bool ok = true;   // every row matched within its tolerance
+  bool ok = true;    // every row matched within its tolerance
   std::string text;  // human tables: paper figure | ours | match
   Json json = Json::object();
 };
@@ -33,6 +33,6 @@ struct PaperRegistration {
 
 }  // namespace hwinterp::cli
 
-#define HWINTERP_PAPER(...)                                                              \
-  static const ::hwinterp::cli::PaperRegistration HWINTERP_CONCAT(hwinterp_paper_, __LINE__)( \
-      ::hwinterp::cli::Paper{__VA_ARGS__})
+#define HWINTERP_PAPER(...)                                        \
+  static const ::hwinterp::cli::PaperRegistration HWINTERP_CONCAT( \
+      hwinterp_paper_, __LINE__)(::hwinterp::cli::Paper{__VA_ARGS__})

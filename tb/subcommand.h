@@ -43,6 +43,6 @@ void maybe_write_json(const Args& args, const Json& report);
 
 #define HWINTERP_CONCAT_INNER(a, b) a##b
 #define HWINTERP_CONCAT(a, b) HWINTERP_CONCAT_INNER(a, b)
-#define HWINTERP_SUBCOMMAND(...)                                               \
-  static const ::hwinterp::cli::SubcommandRegistration HWINTERP_CONCAT(        \
+#define HWINTERP_SUBCOMMAND(...)                                        \
+  static const ::hwinterp::cli::SubcommandRegistration HWINTERP_CONCAT( \
       hwinterp_subcommand_, __LINE__)(::hwinterp::cli::Subcommand{__VA_ARGS__})

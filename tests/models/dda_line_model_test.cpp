@@ -9,7 +9,7 @@ namespace hwinterp::models {
 namespace {
 
 // The eight test lines of 004_dc68f1177cad466f.txt (x0, y0, x1, y1).
-const int64_t kPaperLines[8][4] = {{0, 0, 20, 40},     {10, 10, 40, 20},   {10, -10, 40, -20},
+const int64_t kPaperLines[8][4] = {{0, 0, 20, 40},     {10, 10, 40, 20},     {10, -10, 40, -20},
                                    {-10, 10, -40, 20}, {-10, -10, -40, -40}, {-10, -5, 30, 20},
                                    {7, -2, -32, -38},  {-10, 20, 30, 20}};
 

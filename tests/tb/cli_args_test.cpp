@@ -52,8 +52,10 @@ TEST(CliArgs, RejectsBadInputNamingTheValue) {
   expect_usage_error({"t", "--n", "12abc"}, "12abc", [](const Args& a) { a.integer("n"); });
   expect_usage_error({"t", "--n", "99"}, "99", [](const Args& a) { a.integer("n", 0, 10); });
   expect_usage_error({"t", "--x", "nan"}, "nan", [](const Args& a) { a.real("x"); });
-  expect_usage_error({"t", "--line", "1,,2"}, "--line", [](const Args& a) { a.integer_list("line"); });
-  expect_usage_error({"t", "--line", "1,2,"}, "1,2,", [](const Args& a) { a.integer_list("line"); });
+  expect_usage_error({"t", "--line", "1,,2"}, "--line",
+                     [](const Args& a) { a.integer_list("line"); });
+  expect_usage_error({"t", "--line", "1,2,"}, "1,2,",
+                     [](const Args& a) { a.integer_list("line"); });
   expect_usage_error({"t", "--fast=1"}, "--fast");
 }
 

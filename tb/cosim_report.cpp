@@ -1,0 +1,119 @@
+#include "cosim_report.h"
+
+#include <algorithm>
+#include <sstream>
+
+#include "text_table.h"
+
+namespace hwinterp::tb {
+
+namespace {
+std::string point(const models::LatticePoint& p) {
+  std::string s;
+  for (size_t i = 0; i < p.size(); ++i) s += (i ? "," : "") + std::to_string(p[i]);
+  return s;
+}
+std::string steps(const std::vector<uint64_t>& v) {
+  std::string s;
+  for (size_t i = 0; i < v.size(); ++i) s += (i ? "," : "") + std::to_string(v[i]);
+  return s;
+}
+}  // namespace
+
+bool all_passed(const std::vector<CaseResult>& results) {
+  return !results.empty() &&
+         std::all_of(results.begin(), results.end(), [](const auto& r) { return r.passed(); });
+}
+
+std::string case_table(const std::vector<CaseResult>& results) {
+  TextTable t({"variant", "mode", "case", "cycles", "cmds", "steps", "end", "path err", "bound",
+               "mism", "viol", "sb", "result"});
+  for (const auto& r : results) {
+    const bool end_ok = r.end_position == r.expected_end_position && !r.end_position.empty();
+    t.add_row({r.variant, r.mode, r.name, std::to_string(r.cycles), std::to_string(r.commands),
+               steps(r.steps),
+               end_ok ? point(r.end_position) + " ok" : point(r.end_position) + " BAD",
+               fmt("%.4f", r.max_path_error_steps),
+               (r.error_bound_strict ? "<" : "<=") + fmt("%.4f", r.error_bound),
+               std::to_string(r.mismatches), std::to_string(r.timing_violation_count),
+               std::to_string(r.scoreboard_error_count),
+               r.passed() ? "pass" : (r.timed_out ? "FAIL (timeout)" : "FAIL")});
+  }
+  return t.render();
+}
+
+std::string failure_details(const std::vector<CaseResult>& results) {
+  std::ostringstream os;
+  for (const auto& r : results) {
+    if (r.passed()) continue;
+    os << r.variant << " " << r.mode << " " << r.name << ":\n";
+    if (r.first_mismatch)
+      os << "  first mismatch at cycle " << r.first_mismatch->cycle << ": "
+         << r.first_mismatch->signal << " hls=" << r.first_mismatch->hls
+         << " rtl=" << r.first_mismatch->rtl << "\n";
+    for (const auto& v : r.timing_violations)
+      os << "  timing: cycle " << v.cycle << " axis " << v.axis << " " << v.rule << " "
+         << v.measured << " < " << v.required << " cycles\n";
+    if (r.timing_violation_count > r.timing_violations.size())
+      os << "  ... " << r.timing_violation_count - r.timing_violations.size()
+         << " more timing violations\n";
+    for (const auto& e : r.scoreboard_errors) os << "  scoreboard: " << e << "\n";
+    if (r.scoreboard_error_count > r.scoreboard_errors.size())
+      os << "  ... " << r.scoreboard_error_count - r.scoreboard_errors.size()
+         << " more scoreboard errors\n";
+    if (r.timed_out) os << "  timed out after " << r.cycles << " cycles (core hung?)\n";
+    if (!r.completed && !r.first_mismatch) os << "  did not complete\n";
+  }
+  return os.str();
+}
+
+Json aggregate_json(const std::vector<CaseResult>& results) {
+  Json j = Json::object();
+  uint64_t cycles = 0, commands = 0, mismatches = 0, violations = 0, sb = 0;
+  std::vector<uint64_t> step_sum;
+  double worst = 0;
+  const Mismatch* first = nullptr;
+  for (const auto& r : results) {
+    cycles += r.cycles;
+    commands += r.commands;
+    mismatches += r.mismatches;
+    violations += r.timing_violation_count;
+    sb += r.scoreboard_error_count;
+    worst = std::max(worst, r.max_path_error_steps);
+    step_sum.resize(std::max(step_sum.size(), r.steps.size()), 0);
+    for (size_t i = 0; i < r.steps.size(); ++i) step_sum[i] += r.steps[i];
+    if (!first && r.first_mismatch) first = &*r.first_mismatch;
+  }
+  const CaseResult* last = results.empty() ? nullptr : &results.back();
+  j.set("core", last ? last->core : "");
+  j.set("variant", last ? last->variant : "");
+  j.set("mode", last ? last->mode : "");
+  j.set("seed", last ? last->seed : 0);
+  j.set("passed", all_passed(results));
+  j.set("cycles", cycles);
+  j.set("commands", commands);
+  j.set("steps", Json::array_of(step_sum));
+  j.set("end_position", last ? Json::array_of(last->end_position) : Json::array());
+  j.set("expected_end_position",
+        last ? Json::array_of(last->expected_end_position) : Json::array());
+  j.set("max_path_error_steps", worst);
+  j.set("mismatches", mismatches);
+  j.set("timing_violations", violations);
+  j.set("scoreboard_errors", sb);
+  if (first) {
+    Json m = Json::object();
+    m.set("cycle", first->cycle);
+    m.set("signal", first->signal);
+    m.set("hls", first->hls);
+    m.set("rtl", first->rtl);
+    j.set("first_mismatch", std::move(m));
+  } else {
+    j.set("first_mismatch", nullptr);
+  }
+  Json cases = Json::array();
+  for (const auto& r : results) cases.push(r.to_json());
+  j.set("cases", std::move(cases));
+  return j;
+}
+
+}  // namespace hwinterp::tb
