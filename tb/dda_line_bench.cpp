@@ -1,6 +1,7 @@
 #include "dda_line_bench.h"
 
 #include <chrono>
+#include <cstdio>
 
 namespace hwinterp::tb {
 
@@ -139,8 +140,18 @@ bool DdaLineBench::compare(const DdaLinePins& hls, const DdaLinePins& rtl) {
   return false;
 }
 
+void DdaLineBench::print_progress() const {
+  const CaseResult& r = results_.back();
+  std::fprintf(stderr, "  [%s %s] cycle %llu: case %zu/%zu '%s', command %llu/%llu\n",
+               limits_.variant.c_str(), options_.mode.c_str(),
+               static_cast<unsigned long long>(cycle_), case_index_ + 1, cases_.size(),
+               r.name.c_str(), static_cast<unsigned long long>(r.commands),
+               static_cast<unsigned long long>(r.commands_offered));
+}
+
 void DdaLineBench::observe(const DdaLinePins& hls, const DdaLinePins& rtl) {
   ++cycle_;
+  if (options_.progress_every && cycle_ % options_.progress_every == 0) print_progress();
   const FaultPlan& f = options_.faults;
   DdaLinePins hls_seen = hls;
   if (f.flip_hls_step_at == cycle_) hls_seen.step ^= 1;

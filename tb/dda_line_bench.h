@@ -40,6 +40,8 @@ struct BenchOptions {
   FaultPlan faults;
   std::string trace_path;     // empty: no trace
   uint64_t trace_window = 0;  // 0: whole run
+  // Progress line on stderr every this many clock edges (0: none).
+  uint64_t progress_every = 0;
 };
 
 class DdaLineBench {
@@ -62,6 +64,7 @@ class DdaLineBench {
   void start_case();
   void end_case();
   void drive_items();
+  void print_progress() const;
   DdaLinePins compared_hls(const DdaLinePins& hls) const;
   bool compare(const DdaLinePins& hls, const DdaLinePins& rtl);
 

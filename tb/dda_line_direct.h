@@ -20,6 +20,13 @@ class DdaLineDirect {
 
  public:
   static void run(DdaLineBench& bench) {
+    // A model makes its context the thread's current one; hand the thread
+    // back to the default context when this one dies, or a later model
+    // without an explicit context (the SystemC ones) would pick up a dangling
+    // pointer (Verilator then deadlocks in its own fatal-error path).
+    struct RestoreThreadContext {
+      ~RestoreThreadContext() { Verilated::threadContextp(Verilated::defaultContextp()); }
+    } restore;
     VerilatedContext context;
     Rtl rtl(&context);
     Core hls;

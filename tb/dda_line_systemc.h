@@ -111,11 +111,14 @@ SC_MODULE(DdaLineScBench) {
   }
 
   void on_falling_edge() {
+    // Benches in one elaboration share the kernel: a finished one idles
+    // until the last one stops it, and must not observe those extra edges.
+    if (stopped_) return;
     if (started_) bench_.observe(read(hls_out), read(rtl_out));
     started_ = true;
     if (bench_.finished()) {
-      if (!stopped_) control_.finished_one();
       stopped_ = true;
+      control_.finished_one();
       return;
     }
     drive(bench_.next_frame());
