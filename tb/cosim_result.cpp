@@ -12,6 +12,7 @@ Json CaseResult::to_json() const {
   j.set("passed", passed());
   j.set("cycles", cycles);
   j.set("commands", commands);
+  j.set("first_step_cycle", first_step_cycle);
   j.set("steps", Json::array_of(steps));
   j.set("start_position", Json::array_of(start));
   j.set("end_position", Json::array_of(end_position));

@@ -54,7 +54,8 @@ void DdaLineBench::start_case() {
   last_rtl_ = DdaLinePins{};
   monitors_.clear();
   for (int i = 0; i < limits_.axes; ++i) monitors_.emplace_back(i);
-  scoreboard_ = std::make_unique<DdaLineScoreboard>(limits_.axes, limits_.pos_w, c.start);
+  scoreboard_ =
+      std::make_unique<DdaLineScoreboard>(limits_.axes, limits_.pos_w, c.start, case_start_cycle_);
   case_clock_start_ = now_seconds();
 }
 

@@ -17,8 +17,14 @@ std::string vec(const models::LatticePoint& v) {
 }
 }  // namespace
 
-DdaLineScoreboard::DdaLineScoreboard(int axes, int pos_w, models::LatticePoint start)
-    : axes_(axes), pos_w_(pos_w), start_(start), at_(start), expected_end_(std::move(start)) {}
+DdaLineScoreboard::DdaLineScoreboard(int axes, int pos_w, models::LatticePoint start,
+                                     uint64_t case_start_cycle)
+    : axes_(axes),
+      pos_w_(pos_w),
+      case_start_cycle_(case_start_cycle),
+      start_(start),
+      at_(start),
+      expected_end_(std::move(start)) {}
 
 void DdaLineScoreboard::command_taken(const std::vector<int64_t>& delta, models::Preload preload) {
   Command c{delta, preload, expected_end_, expected_end_};
@@ -77,6 +83,7 @@ void DdaLineScoreboard::observe(uint64_t cycle, const DdaLinePins& pins, CaseRes
   const uint32_t rising = pins.step & ~prev_step_;
   prev_step_ = pins.step;
   if (rising) {
+    if (r.first_step_cycle == 0) r.first_step_cycle = cycle - case_start_cycle_;
     std::vector<int> step(static_cast<size_t>(axes_), 0);
     for (int i = 0; i < axes_; ++i) {
       if (!((rising >> i) & 1)) continue;

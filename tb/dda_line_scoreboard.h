@@ -17,7 +17,9 @@ namespace hwinterp::tb {
 
 class DdaLineScoreboard {
  public:
-  DdaLineScoreboard(int axes, int pos_w, models::LatticePoint start);
+  // `case_start_cycle`: run cycle before the case's first edge (cycles in
+  // reports are counted from the case start).
+  DdaLineScoreboard(int axes, int pos_w, models::LatticePoint start, uint64_t case_start_cycle);
 
   // A command the core took, in order, with the preload it was taken with.
   void command_taken(const std::vector<int64_t>& delta, models::Preload preload);
@@ -46,6 +48,7 @@ class DdaLineScoreboard {
 
   int axes_;
   int pos_w_;
+  uint64_t case_start_cycle_;
   models::LatticePoint start_, at_, expected_end_;
   std::vector<Command> taken_;
   size_t current_ = 0;                           // command whose moves are being consumed

@@ -1,75 +1,32 @@
 // `hwinterp log` through the real executable: the command-line contract (exit
 // 0 on success, 2 with one line naming the value on bad input) and the JSON
-// and CSV outputs. cmd_log.cpp lives in the executable, not in hwinterp_tb,
-// so the test runs the binary built beside this one (build/tb/hwinterp), or
-// $HWINTERP_EXE.
+// and CSV outputs.
 #include <gtest/gtest.h>
-#include <sys/stat.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <array>
-#include <cstdio>
-#include <cstdlib>
 #include <fstream>
-#include <sstream>
 #include <string>
+
+#include "run_hwinterp.h"
 
 namespace {
 
-std::string hwinterp_exe() {
-  if (const char* e = std::getenv("HWINTERP_EXE")) return e;
-  std::array<char, 4096> buf{};
-  const ssize_t n = readlink("/proc/self/exe", buf.data(), buf.size() - 1);
-  if (n <= 0) return "";
-  std::string self(buf.data(), static_cast<size_t>(n));
-  self = self.substr(0, self.rfind('/'));                   // build/tests
-  return self.substr(0, self.rfind('/')) + "/tb/hwinterp";  // build/tb/hwinterp
-}
+using hwinterp::testing::CliResult;
+using hwinterp::testing::run_hwinterp;
+using hwinterp::testing::slurp;
 
-struct Result {
-  int code = -1;
-  std::string err;  // stderr only
-};
-
-// Runs `hwinterp <args>`, keeping stderr only.
-Result run_hwinterp(const std::string& args) {
-  const std::string cmd = hwinterp_exe() + " " + args + " 2>&1 >/dev/null";
-  Result r;
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  std::array<char, 512> buf{};
-  while (fgets(buf.data(), static_cast<int>(buf.size()), p)) r.err += buf.data();
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
-
-Result run(const std::string& args) { return run_hwinterp("log " + args); }
-
-std::string slurp(const std::string& path) {
-  std::ifstream f(path);
-  std::stringstream ss;
-  ss << f.rdbuf();
-  return ss.str();
-}
+CliResult run(const std::string& args) { return run_hwinterp("log " + args); }
 
 class LogCli : public ::testing::Test {
  protected:
-  void SetUp() override {
-    if (access(hwinterp_exe().c_str(), X_OK) != 0)
-      GTEST_SKIP() << "hwinterp executable not found at " << hwinterp_exe();
-    dir_ = ::testing::TempDir() + "log_cli_" + std::to_string(getpid());
-    mkdir(dir_.c_str(), 0755);
-  }
+  void SetUp() override { dir_ = hwinterp::testing::scratch_dir("log_cli"); }
   std::string dir_;
 };
 
 TEST_F(LogCli, PaperCaseJsonAndCsv) {
   const std::string json = dir_ + "/log.json", csv = dir_ + "/log.csv";
-  const Result r = run("--d1 10 --spiral 30 --cone 5 --rake 8 --dl 0.2 --x-end 30 --json " + json +
-                       " --csv " + csv);
+  const CliResult r = run("--d1 10 --spiral 30 --cone 5 --rake 8 --dl 0.2 --x-end 30 --json " +
+                          json + " --csv " + csv);
   ASSERT_EQ(r.code, 0) << r.err;
   const std::string j = slurp(json);
   for (const char* key :
@@ -87,7 +44,7 @@ TEST_F(LogCli, PaperCaseJsonAndCsv) {
 
 TEST_F(LogCli, ExactEven) {
   const std::string json = dir_ + "/exact.json";
-  const Result r = run("--exact-even --json " + json);
+  const CliResult r = run("--exact-even --json " + json);
   ASSERT_EQ(r.code, 0) << r.err;
   const std::string j = slurp(json);
   EXPECT_NE(j.find("\"even_step\": \"exact\""), std::string::npos) << j;
@@ -112,7 +69,7 @@ TEST_F(LogCli, BadInputOneLineNamingTheValue) {
       {"--csv /nonexistent-dir/x.csv", "/nonexistent-dir/x.csv"},
   };
   for (const auto& [args, named] : cases) {
-    const Result r = run(args);
+    const CliResult r = run(args);
     EXPECT_EQ(r.code, 2) << args;
     EXPECT_NE(r.err.find(named), std::string::npos) << args << ": " << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
@@ -122,7 +79,7 @@ TEST_F(LogCli, BadInputOneLineNamingTheValue) {
 // The reproduction pages of papers 001, 003 and 004 match (exit 0).
 TEST_F(LogCli, ReproducePagesMatch) {
   for (const char* paper : {"log", "chord", "ratio"}) {
-    const Result r = run_hwinterp(std::string("reproduce --paper ") + paper);
+    const CliResult r = run_hwinterp(std::string("reproduce --paper ") + paper);
     EXPECT_EQ(r.code, 0) << paper << ": " << r.err;
   }
 }
