@@ -62,19 +62,18 @@ module dda_line #(
   logic [ExpW-1:0]            cmd_exp;
   logic [AXES-1:0][ACC_W-1:0] cmd_inc;
 
+  for (genvar i = 0; i < AXES; i++) begin : g_norm
+    assign cmd_neg[i] = cmd_delta_i[i][ACC_W-1];
+    assign cmd_mag[i] = cmd_neg[i] ? ACC_W'(-cmd_delta_i[i]) : cmd_delta_i[i];
+    assign cmd_inc[i] = cmd_mag[i] << (ExpW'(ACC_W) - cmd_exp);
+  end
+
   always_comb begin
     cmd_any = '0;
-    for (int i = 0; i < AXES; i++) begin
-      cmd_neg[i] = cmd_delta_i[i][ACC_W-1];
-      cmd_mag[i] = cmd_neg[i] ? ACC_W'(-cmd_delta_i[i]) : cmd_delta_i[i];
-      cmd_any    = cmd_any | cmd_mag[i];
-    end
+    for (int i = 0; i < AXES; i++) cmd_any = cmd_any | cmd_mag[i];
     cmd_exp = '0;
     for (int b = 0; b < ACC_W; b++) begin
       if (cmd_any[b]) cmd_exp = ExpW'(b + 1);
-    end
-    for (int i = 0; i < AXES; i++) begin
-      cmd_inc[i] = cmd_mag[i] << (ExpW'(ACC_W) - cmd_exp);
     end
   end
 
@@ -107,18 +106,24 @@ module dda_line #(
   logic [AXES-1:0]            moves;  // the running command moves the axis at all
   logic [AXES-1:0]            ready;
   logic [FEED_W:0]            feed_sum;
+  logic [FEED_W-1:0]          feed_phase;  // feed_sum without its carry
   logic                       feed_full, tick, stall, advance, last;
 
-  always_comb begin
-    for (int i = 0; i < AXES; i++) begin
-      sum[i]   = {1'b0, acc_q[i]} + {1'b0, inc_q[i]};
-      carry[i] = sum[i][ACC_W];
-      moves[i] = act_q && (inc_q[i] != '0);
-    end
+  // Per-axis slices: accumulator adder, step decision, position counter.
+  for (genvar i = 0; i < AXES; i++) begin : g_axis_engine
+    assign sum[i]   = {1'b0, acc_q[i]} + {1'b0, inc_q[i]};
+    assign carry[i] = sum[i][ACC_W];
+    assign moves[i] = act_q && (inc_q[i] != '0);
+    // A new command restarts the accumulator at 0 or one half.
+    assign acc_d[i] = buf_take ? (buf_half_q ? {1'b1, {(ACC_W - 1) {1'b0}}} : '0) :
+                      advance  ? sum[i][ACC_W-1:0] : acc_q[i];
+    assign pos_d[i] = !(advance && carry[i]) ? pos_q[i] :
+                      neg_q[i] ? pos_q[i] - POS_W'(1) : pos_q[i] + POS_W'(1);
   end
 
   assign feed_full = feed_i[FEED_W];
   assign feed_sum  = {1'b0, feed_q} + {1'b0, feed_i[FEED_W-1:0]};
+  assign feed_phase = feed_sum[FEED_W-1:0];
   assign tick      = act_q && (feed_full || feed_sum[FEED_W]);
   assign stall     = |(carry & ~ready);
   assign advance   = tick && !stall;
@@ -127,28 +132,19 @@ module dda_line #(
 
   always_comb begin
     act_d  = act_q;
-    acc_d  = acc_q;
     left_d = left_q;
-    pos_d  = pos_q;
     // The feed phase runs while a command runs, and holds on a stalled tick so
     // that the iteration is retried on the next clock.
     feed_d = feed_q;
-    if (act_q && !feed_full && !(tick && stall)) feed_d = feed_sum[FEED_W-1:0];
+    if (act_q && !feed_full && !(tick && stall)) feed_d = feed_phase;
 
     if (advance) begin
       left_d = left_q - LeftW'(1);
-      for (int i = 0; i < AXES; i++) begin
-        acc_d[i] = sum[i][ACC_W-1:0];
-        if (carry[i]) pos_d[i] = neg_q[i] ? pos_q[i] - POS_W'(1) : pos_q[i] + POS_W'(1);
-      end
       if (last) act_d = 1'b0;
     end
     if (buf_take) begin
       act_d  = 1'b1;
       left_d = LeftW'(1) << buf_exp_q;
-      for (int i = 0; i < AXES; i++) begin
-        acc_d[i] = buf_half_q ? {1'b1, {(ACC_W - 1) {1'b0}}} : '0;
-      end
     end
     buf_valid_d = cmd_take || (buf_valid_q && !buf_take);
   end
