@@ -2,6 +2,7 @@
 // the reference model), from a line, a job file, the paper's test lines or a
 // seeded random stream, in the SystemC or the direct mode.
 #include <iostream>
+#include <memory>
 #include <random>
 #include <sstream>
 
@@ -110,6 +111,9 @@ int run_cosim(int argc, char** argv, int first) {
       .option("vcd", "FILE", "write a VCD trace (inputs, HLS and RTL outputs)")
       .option("fst", "FILE", "write an FST trace (via vcd2fst)")
       .option("trace-window", "N", "trace only the last N cycles (e.g. before a mismatch)")
+      .option("dump-frames", "FILE",
+              "write the input frames, one hex line a clock, for replay in a Verilog simulator "
+              "(tb/verilog/dda_line_replay_tb.sv)")
       .option("inject", "KIND@CYCLE",
               "test hook: mismatch@C flips the HLS step_o[0] before the comparison, "
               "glitch@C the observed step_o[0] after it");
@@ -160,6 +164,7 @@ int run_cosim(int argc, char** argv, int first) {
   options.trace_path = args.given("vcd")   ? args.str("vcd")
                        : args.given("fst") ? args.str("fst")
                                            : "";
+  if (args.given("dump-frames")) options.frames_path = args.str("dump-frames");
   if (args.given("trace-window"))
     options.trace_window = static_cast<uint64_t>(args.integer("trace-window", 1, 100000000));
 
@@ -167,7 +172,14 @@ int run_cosim(int argc, char** argv, int first) {
   if (args.given("random")) std::cout << ", seed " << seed;
   std::cout << ", " << cases.size() << (cases.size() == 1 ? " case\n" : " cases\n") << std::flush;
 
-  tb::DdaLineBench bench(limits, std::move(cases), options);
+  // Output files are opened before the run, so a bad path costs no simulation.
+  std::unique_ptr<tb::DdaLineBench> bench_owner;
+  try {
+    bench_owner = std::make_unique<tb::DdaLineBench>(limits, std::move(cases), options);
+  } catch (const std::runtime_error& e) {
+    throw UsageError(e.what());
+  }
+  tb::DdaLineBench& bench = *bench_owner;
   if (mode == "direct")
     tb::run_dda_line_direct(variant, bench);
   else

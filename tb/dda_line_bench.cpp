@@ -19,6 +19,8 @@ DdaLineBench::DdaLineBench(DdaLineLimits limits, std::vector<DdaLineCase> cases,
     : limits_(std::move(limits)), cases_(std::move(cases)), options_(std::move(options)) {
   if (!options_.trace_path.empty())
     trace_ = std::make_unique<DdaLineTrace>(options_.trace_path, limits_, options_.trace_window);
+  if (!options_.frames_path.empty())
+    frames_ = std::make_unique<DdaLineFrameWriter>(options_.frames_path, limits_);
   if (cases_.empty())
     finished_ = true;
   else
@@ -29,6 +31,7 @@ DdaLineBench::~DdaLineBench() = default;
 
 void DdaLineBench::close_trace() {
   if (trace_) trace_->close();
+  if (frames_) frames_->close();
 }
 
 void DdaLineBench::start_case() {
@@ -157,6 +160,7 @@ void DdaLineBench::observe(const DdaLinePins& hls, const DdaLinePins& rtl) {
   DdaLinePins hls_seen = hls;
   if (f.flip_hls_step_at == cycle_) hls_seen.step ^= 1;
   if (trace_) trace_->record(cycle_, frame_, hls_seen, rtl);
+  if (frames_) frames_->write(frame_);
 
   CaseResult& r = results_.back();
   r.cycles = cycle_ - case_start_cycle_;

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "cosim_result.h"
+#include "dda_line_frames.h"
 #include "dda_line_pins.h"
 #include "dda_line_scoreboard.h"
 #include "dda_line_stimulus.h"
@@ -42,6 +43,8 @@ struct BenchOptions {
   uint64_t trace_window = 0;  // 0: whole run
   // Progress line on stderr every this many clock edges (0: none).
   uint64_t progress_every = 0;
+  // Input frames for replay in other simulators (tb/dda_line_frames.h); empty: none.
+  std::string frames_path;
 };
 
 class DdaLineBench {
@@ -56,7 +59,8 @@ class DdaLineBench {
   // Results of the cases that ran (a mismatch stops the run).
   const std::vector<CaseResult>& results() const { return results_; }
   uint64_t cycles() const { return cycle_; }
-  // Closes the trace (FST conversion); throws std::runtime_error on failure.
+  // Closes the trace (FST conversion) and the frame file; throws
+  // std::runtime_error on failure.
   void close_trace();
 
  private:
@@ -73,6 +77,7 @@ class DdaLineBench {
   BenchOptions options_;
   std::vector<CaseResult> results_;
   std::unique_ptr<DdaLineTrace> trace_;
+  std::unique_ptr<DdaLineFrameWriter> frames_;
 
   uint64_t cycle_ = 0;  // clock edges so far in the run
   bool finished_ = false;

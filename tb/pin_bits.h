@@ -6,6 +6,7 @@
 
 #include <verilated.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <type_traits>
 
@@ -26,21 +27,28 @@ uint64_t get_bits(const T& port, int lsb, int width) {
   return (static_cast<uint64_t>(port) >> lsb) & low_mask(width);
 }
 
-// Verilator --cc wide ports: 32-bit words, least significant first.
+// Verilator --cc wide ports: 32-bit words, least significant first. A field
+// spans at most three words; each is updated with one mask (this runs for
+// every port on every clock of the direct mode).
 template <std::size_t N>
 void put_bits(VlWide<N>& port, int lsb, int width, uint64_t value) {
-  for (int b = 0; b < width; ++b) {
-    const int bit = lsb + b, word = bit / 32, off = bit % 32;
-    const uint32_t m = uint32_t{1} << off;
-    port[word] = ((value >> b) & 1) ? (port[word] | m) : (port[word] & ~m);
+  value &= low_mask(width);
+  for (int done = 0; done < width;) {
+    const int bit = lsb + done, word = bit / 32, off = bit % 32;
+    const int take = std::min(32 - off, width - done);
+    const uint32_t m = static_cast<uint32_t>(low_mask(take)) << off;
+    port[word] = (port[word] & ~m) | ((static_cast<uint32_t>(value >> done) << off) & m);
+    done += take;
   }
 }
 template <std::size_t N>
 uint64_t get_bits(const VlWide<N>& port, int lsb, int width) {
   uint64_t v = 0;
-  for (int b = 0; b < width; ++b) {
-    const int bit = lsb + b;
-    v |= static_cast<uint64_t>((port[bit / 32] >> (bit % 32)) & 1) << b;
+  for (int done = 0; done < width;) {
+    const int bit = lsb + done, word = bit / 32, off = bit % 32;
+    const int take = std::min(32 - off, width - done);
+    v |= ((static_cast<uint64_t>(port[word]) >> off) & low_mask(take)) << done;
+    done += take;
   }
   return v;
 }
