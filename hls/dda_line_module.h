@@ -48,7 +48,7 @@ SC_MODULE(DdaLineModule) {
     typename Core::Inputs in;
     in.rst_n = rst_ni.read();
     in.cmd_valid = cmd_valid_i.read();
-    const pin_t<AXES* ACC_W> delta = cmd_delta_i.read();
+    const pin_t<AXES* ACC_W>& delta = cmd_delta_i.read();
     for (int i = 0; i < AXES; ++i)
       in.cmd_delta[i] = pin_field<AXES * ACC_W>(delta, i * ACC_W, ACC_W);
     in.feed = feed_i.read();
@@ -63,15 +63,15 @@ SC_MODULE(DdaLineModule) {
     cmd_ready_o.write(o.cmd_ready);
     step_o.write(o.step);
     dir_o.write(o.dir);
-    pin_t<AXES* POS_W> pos = 0;
     for (int i = 0; i < AXES; ++i)
-      set_pin_field<AXES * POS_W>(pos, i * POS_W, POS_W, o.pos[i].to_uint64());
-    pos_o.write(pos);
+      set_pin_field<AXES * POS_W>(pos_, i * POS_W, POS_W, o.pos[i].to_uint64());
+    pos_o.write(pos_);
     busy_o.write(o.busy);
     done_o.write(o.done);
   }
 
   Core core_;
+  pin_t<AXES* POS_W> pos_ = 0;  // kept: building a wide pin value allocates
 };
 
 }  // namespace hwinterp::hls

@@ -9,6 +9,7 @@
 // sc_bv has no sign field.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <systemc>
 #include <type_traits>
@@ -21,25 +22,44 @@ using pin_t = std::conditional_t<
     std::conditional_t<(W <= 64), sc_dt::sc_uint<(W <= 64 ? W : 64)>, sc_dt::sc_bv<W>>>;
 
 // Field [lsb +: width] (width <= 64) of a pin value: packed per-axis ports
-// hold axis i in bits [i*W +: W], as the RTL's `[AXES-1:0][W-1:0]`.
+// hold axis i in bits [i*W +: W], as the RTL's `[AXES-1:0][W-1:0]`. Wide
+// (sc_bv) pins go word by word through get_word/set_word: these run for
+// every wide port on every clock of the SystemC mode.
 template <int W>
 uint64_t pin_field(const pin_t<W>& v, int lsb, int width) {
   if constexpr (W == 1) {
     return v ? 1 : 0;
-  } else {
+  } else if constexpr (W <= 64) {
     return v.range(lsb + width - 1, lsb).to_uint64();
+  } else {
+    uint64_t out = 0;
+    for (int done = 0; done < width;) {
+      const int bit = lsb + done, word = bit / 32, off = bit % 32;
+      const int take = std::min(32 - off, width - done);
+      const uint64_t mask = (uint64_t{1} << take) - 1;
+      out |= ((static_cast<uint64_t>(v.get_word(word)) >> off) & mask) << done;
+      done += take;
+    }
+    return out;
   }
 }
 
 template <int W>
 void set_pin_field(pin_t<W>& v, int lsb, int width, uint64_t value) {
-  const uint64_t mask = width >= 64 ? ~uint64_t{0} : (uint64_t{1} << width) - 1;
+  if (width < 64) value &= (uint64_t{1} << width) - 1;
   if constexpr (W == 1) {
-    v = (value & mask) != 0;
+    v = value != 0;
   } else if constexpr (W <= 64) {
-    v.range(lsb + width - 1, lsb) = value & mask;
+    v.range(lsb + width - 1, lsb) = value;
   } else {
-    v.range(lsb + width - 1, lsb) = sc_dt::sc_bv<64>(value & mask).range(width - 1, 0);
+    for (int done = 0; done < width;) {
+      const int bit = lsb + done, word = bit / 32, off = bit % 32;
+      const int take = std::min(32 - off, width - done);
+      const uint32_t mask = static_cast<uint32_t>(((uint64_t{1} << take) - 1) << off);
+      const uint32_t w = v.get_word(word);
+      v.set_word(word, (w & ~mask) | ((static_cast<uint32_t>(value >> done) << off) & mask));
+      done += take;
+    }
   }
 }
 

@@ -86,7 +86,7 @@ SC_MODULE(DdaLineScBench) {
     p.cmd_ready = o.cmd_ready.read();
     p.step = static_cast<uint32_t>(hls::pin_field<AXES>(o.step.read(), 0, AXES));
     p.dir = static_cast<uint32_t>(hls::pin_field<AXES>(o.dir.read(), 0, AXES));
-    const pin_t<AXES* POS_W> pos = o.pos.read();
+    const pin_t<AXES* POS_W>& pos = o.pos.read();
     for (int i = 0; i < AXES; ++i)
       p.pos[static_cast<size_t>(i)] = hls::pin_field<AXES * POS_W>(pos, i * POS_W, POS_W);
     p.busy = o.busy.read();
@@ -97,11 +97,10 @@ SC_MODULE(DdaLineScBench) {
   void drive(const DdaLineFrame& f) {
     rst_n.write(f.rst_n);
     cmd_valid.write(f.cmd_valid);
-    pin_t<AXES* ACC_W> d = 0;
     for (int i = 0; i < AXES; ++i)
-      hls::set_pin_field<AXES * ACC_W>(d, i * ACC_W, ACC_W,
+      hls::set_pin_field<AXES * ACC_W>(delta_, i * ACC_W, ACC_W,
                                        static_cast<uint64_t>(f.cmd_delta[static_cast<size_t>(i)]));
-    cmd_delta.write(d);
+    cmd_delta.write(delta_);
     feed.write(f.feed);
     half_preload.write(f.half_preload);
     step_len.write(f.timing.step_len);
@@ -128,6 +127,7 @@ SC_MODULE(DdaLineScBench) {
   ScRunControl& control_;
   bool started_ = false;
   bool stopped_ = false;
+  pin_t<AXES* ACC_W> delta_ = 0;  // kept: building a wide pin value allocates
 };
 
 }  // namespace hwinterp::tb
