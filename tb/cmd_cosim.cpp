@@ -111,6 +111,9 @@ int run_cosim(int argc, char** argv, int first) {
       .option("vcd", "FILE", "write a VCD trace (inputs, HLS and RTL outputs)")
       .option("fst", "FILE", "write an FST trace (via vcd2fst)")
       .option("trace-window", "N", "trace only the last N cycles (e.g. before a mismatch)")
+      .option("path-csv", "FILE",
+              "write the lattice path (start, command targets, every move) as CSV for "
+              "scripts/plot_dda_paths.py")
       .option("dump-frames", "FILE",
               "write the input frames, one hex line a clock, for replay in a Verilog simulator "
               "(tb/verilog/dda_line_replay_tb.sv)")
@@ -165,6 +168,7 @@ int run_cosim(int argc, char** argv, int first) {
                        : args.given("fst") ? args.str("fst")
                                            : "";
   if (args.given("dump-frames")) options.frames_path = args.str("dump-frames");
+  if (args.given("path-csv")) options.path_csv = args.str("path-csv");
   if (args.given("trace-window"))
     options.trace_window = static_cast<uint64_t>(args.integer("trace-window", 1, 100000000));
 

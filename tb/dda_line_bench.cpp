@@ -21,6 +21,13 @@ DdaLineBench::DdaLineBench(DdaLineLimits limits, std::vector<DdaLineCase> cases,
     trace_ = std::make_unique<DdaLineTrace>(options_.trace_path, limits_, options_.trace_window);
   if (!options_.frames_path.empty())
     frames_ = std::make_unique<DdaLineFrameWriter>(options_.frames_path, limits_);
+  if (!options_.path_csv.empty()) {
+    path_csv_ = std::make_unique<std::ofstream>(options_.path_csv);
+    if (!*path_csv_) throw std::runtime_error("cannot write path CSV '" + options_.path_csv + "'");
+    *path_csv_ << "case,cycle,kind";
+    for (int i = 0; i < limits_.axes; ++i) *path_csv_ << ",p" << i;
+    *path_csv_ << "\n";
+  }
   if (cases_.empty())
     finished_ = true;
   else
@@ -32,6 +39,17 @@ DdaLineBench::~DdaLineBench() = default;
 void DdaLineBench::close_trace() {
   if (trace_) trace_->close();
   if (frames_) frames_->close();
+  if (path_csv_) {
+    path_csv_->close();
+    if (!*path_csv_) throw std::runtime_error("error writing path CSV '" + options_.path_csv + "'");
+  }
+}
+
+void DdaLineBench::path_row(const char* kind, const models::LatticePoint& p) {
+  if (!path_csv_) return;
+  *path_csv_ << cases_[case_index_].name << ',' << cycle_ - case_start_cycle_ << ',' << kind;
+  for (const int64_t v : p) *path_csv_ << ',' << v;
+  *path_csv_ << '\n';
 }
 
 void DdaLineBench::start_case() {
@@ -55,11 +73,14 @@ void DdaLineBench::start_case() {
   gap_left_ = 0;
   settings_ = c.settings;
   last_rtl_ = DdaLinePins{};
+  prev_step_ = 0;
   monitors_.clear();
   for (int i = 0; i < limits_.axes; ++i) monitors_.emplace_back(i);
   scoreboard_ =
       std::make_unique<DdaLineScoreboard>(limits_.axes, limits_.pos_w, c.start, case_start_cycle_);
   case_clock_start_ = now_seconds();
+  path_target_ = c.start;
+  path_row("start", c.start);
 }
 
 void DdaLineBench::end_case() {
@@ -101,6 +122,8 @@ void DdaLineBench::drive_items() {
               it.delta, settings_.half_preload ? models::Preload::kHalf : models::Preload::kZero);
           ++results_.back().commands;
           ++item_;
+          for (size_t i = 0; i < it.delta.size(); ++i) path_target_[i] += it.delta[i];
+          path_row("target", path_target_);
         }
         return;
     }
@@ -182,6 +205,9 @@ void DdaLineBench::observe(const DdaLinePins& hls, const DdaLinePins& rtl) {
                                                 frame_.timing, r.timing_violations,
                                                 r.timing_violation_count);
     scoreboard_->observe(cycle_, seen, r);
+    // A rising step edge is a move (the scoreboard has just applied it).
+    if (path_csv_ && (seen.step & ~prev_step_)) path_row("move", scoreboard_->position());
+    prev_step_ = seen.step;
   }
 
   switch (phase_) {

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <cstdint>
+#include <fstream>
 #include <memory>
 #include <optional>
 #include <string>
@@ -45,6 +46,10 @@ struct BenchOptions {
   uint64_t progress_every = 0;
   // Input frames for replay in other simulators (tb/dda_line_frames.h); empty: none.
   std::string frames_path;
+  // The lattice path as CSV (case,cycle,kind,axis values...): kind `start`
+  // (case start), `target` (end point of a command taken), `move` (position
+  // after the core stepped); scripts/plot_dda_paths.py draws it. Empty: none.
+  std::string path_csv;
 };
 
 class DdaLineBench {
@@ -78,6 +83,10 @@ class DdaLineBench {
   std::vector<CaseResult> results_;
   std::unique_ptr<DdaLineTrace> trace_;
   std::unique_ptr<DdaLineFrameWriter> frames_;
+  std::unique_ptr<std::ofstream> path_csv_;
+  models::LatticePoint path_target_;  // where the commands taken so far lead
+  uint32_t prev_step_ = 0;            // step_o seen after the previous edge
+  void path_row(const char* kind, const models::LatticePoint& p);
 
   uint64_t cycle_ = 0;  // clock edges so far in the run
   bool finished_ = false;

@@ -71,6 +71,34 @@ TEST(CosimCli, FstTraceIsWritten) {
   EXPECT_GT(f.tellg(), 100);
 }
 
+// --path-csv: the case start, each command's target and one row per move,
+// consistent with the steps the report counts.
+TEST(CosimCli, PathCsvHasStartTargetAndEveryMove) {
+  const std::string csv = scratch_dir("cosim_path") + "/p.csv";
+  const CliResult r = run_hwinterp(
+      "cosim --core dda_line --line 10,10,40,20 --mode direct "
+      "--path-csv " +
+      csv);
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  std::ifstream f(csv);
+  std::string line;
+  std::getline(f, line);
+  EXPECT_EQ(line, "case,cycle,kind,p0,p1");
+  int starts = 0, targets = 0, moves = 0;
+  std::string last;
+  while (std::getline(f, line)) {
+    starts += line.find(",start,") != std::string::npos;
+    targets += line.find(",target,40,20") != std::string::npos;
+    moves += line.find(",move,") != std::string::npos;
+    last = line;
+  }
+  EXPECT_EQ(starts, 1);
+  EXPECT_EQ(targets, 1);
+  EXPECT_GE(moves, 30);  // 30 x-steps, 10 y-steps, some together
+  EXPECT_LE(moves, 40);
+  EXPECT_NE(last.find(",move,40,20"), std::string::npos) << last;
+}
+
 TEST(CosimCli, TimingViolationExitsOne) {
   const CliResult r = run_hwinterp(
       "cosim --core dda_line --line 0,0,8,0 --mode direct "
