@@ -100,16 +100,7 @@ Json aggregate_json(const std::vector<CaseResult>& results) {
   j.set("mismatches", mismatches);
   j.set("timing_violations", violations);
   j.set("scoreboard_errors", sb);
-  if (first) {
-    Json m = Json::object();
-    m.set("cycle", first->cycle);
-    m.set("signal", first->signal);
-    m.set("hls", first->hls);
-    m.set("rtl", first->rtl);
-    j.set("first_mismatch", std::move(m));
-  } else {
-    j.set("first_mismatch", nullptr);
-  }
+  j.set("first_mismatch", first ? to_json(*first) : Json());
   Json cases = Json::array();
   for (const auto& r : results) cases.push(r.to_json());
   j.set("cases", std::move(cases));

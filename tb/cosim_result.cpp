@@ -2,6 +2,15 @@
 
 namespace hwinterp::tb {
 
+Json to_json(const Mismatch& m) {
+  Json j = Json::object();
+  j.set("cycle", m.cycle);
+  j.set("signal", m.signal);
+  j.set("hls", m.hls);
+  j.set("rtl", m.rtl);
+  return j;
+}
+
 Json CaseResult::to_json() const {
   Json j = Json::object();
   j.set("core", core);
@@ -23,16 +32,7 @@ Json CaseResult::to_json() const {
   bound.set("strict", error_bound_strict);
   j.set("path_error_bound", std::move(bound));
   j.set("mismatches", mismatches);
-  if (first_mismatch) {
-    Json m = Json::object();
-    m.set("cycle", first_mismatch->cycle);
-    m.set("signal", first_mismatch->signal);
-    m.set("hls", first_mismatch->hls);
-    m.set("rtl", first_mismatch->rtl);
-    j.set("first_mismatch", std::move(m));
-  } else {
-    j.set("first_mismatch", nullptr);
-  }
+  j.set("first_mismatch", first_mismatch ? tb::to_json(*first_mismatch) : Json());
   j.set("timing_violations", timing_violation_count);
   Json tv = Json::array();
   for (const auto& v : timing_violations) {

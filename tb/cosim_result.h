@@ -21,6 +21,8 @@ struct Mismatch {
   uint64_t rtl;
 };
 
+Json to_json(const Mismatch& m);
+
 // A step/dir timing rule broken on one axis.
 struct TimingViolation {
   uint64_t cycle;

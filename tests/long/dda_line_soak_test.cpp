@@ -6,24 +6,17 @@
 
 #include <memory>
 
+#include "../tb/dda_line_test_support.h"
 #include "dda_line_cosim.h"
 
 namespace hwinterp::tb {
 namespace {
 
-void expect_all_pass(const std::vector<CaseResult>& results) {
-  ASSERT_FALSE(results.empty());
-  for (const auto& r : results) EXPECT_TRUE(r.passed()) << r.to_json().dump();
-}
-
 // About 3 * 10^7 cycles per variant in the direct mode.
 TEST(DdaLineSoak, DirectManySeeds) {
   for (const std::string& v : dda_line_variants()) {
     for (uint64_t seed = 100; seed < 110; ++seed) {
-      DdaLineBench bench(dda_line_limits(v), {random_case(dda_line_limits(v), 2500, seed)},
-                         BenchOptions{"direct", seed});
-      run_dda_line_direct(v, bench);
-      expect_all_pass(bench.results());
+      expect_all_pass(run_direct(v, {random_case(dda_line_limits(v), 2500, seed)}));
     }
   }
 }
@@ -55,10 +48,8 @@ TEST(DdaLineSoak, DirectLongLines) {
       end[0] = (int64_t{1} << 20) + 1;
       end[1] = -333333;
       if (l.axes > 2) end[2] = 7;
-      DdaLineBench bench(l, {line_case(l, "long", std::vector<int64_t>(end.size(), 0), end, s)},
-                         BenchOptions{"direct", 0});
-      run_dda_line_direct(v, bench);
-      expect_all_pass(bench.results());
+      expect_all_pass(
+          run_direct(v, {line_case(l, "long", std::vector<int64_t>(end.size(), 0), end, s)}));
     }
   }
 }

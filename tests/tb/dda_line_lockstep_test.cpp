@@ -10,27 +10,10 @@
 #include <memory>
 
 #include "dda_line_cosim.h"
+#include "dda_line_test_support.h"
 
 namespace hwinterp::tb {
 namespace {
-
-std::vector<CaseResult> run_direct(const std::string& variant, std::vector<DdaLineCase> cases,
-                                   BenchOptions o = {}) {
-  o.mode = "direct";
-  DdaLineBench bench(dda_line_limits(variant), std::move(cases), o);
-  run_dda_line_direct(variant, bench);
-  return bench.results();
-}
-
-void expect_all_pass(const std::vector<CaseResult>& results) {
-  ASSERT_FALSE(results.empty());
-  for (const auto& r : results) {
-    EXPECT_TRUE(r.passed()) << r.variant << " " << r.mode << " " << r.name << ": "
-                            << r.to_json().dump();
-    EXPECT_EQ(r.commands, r.commands_offered) << r.name;
-    EXPECT_EQ(r.end_position, r.expected_end_position) << r.name;
-  }
-}
 
 uint64_t total_cycles(const std::vector<CaseResult>& results) {
   uint64_t n = 0;
