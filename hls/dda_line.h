@@ -69,7 +69,7 @@ class DdaLine {
     feed_q_ = 0;
     done_q_ = false;
     for (int i = 0; i < AXES; ++i) {
-      buf_inc_q_[i] = 0;
+      buf_mag_q_[i] = 0;
       buf_neg_q_[i] = false;
       acc_q_[i] = 0;
       inc_q_[i] = 0;
@@ -122,11 +122,11 @@ class DdaLine {
       left_q_ = left_t(1) << buf_exp_q_.to_uint();
       for (int i = 0; i < AXES; ++i) {
         acc_q_[i] = buf_half_q_ ? acc_t(acc_t(1) << (ACC_W - 1)) : acc_t(0);
-        inc_q_[i] = buf_inc_q_[i];
+        inc_q_[i] = shifted(buf_mag_q_[i], buf_exp_q_.to_uint());
         neg_q_[i] = buf_neg_q_[i];
       }
     }
-    // Command buffer: normalise the offered command as it is taken.
+    // Command buffer: magnitudes and exponent of the offered command.
     if (cmd_take) load_buffer(in);
     buf_valid_q_ = cmd_take || (buf_valid_q_ && !buf_take);
     done_q_ = last;
@@ -150,26 +150,32 @@ class DdaLine {
   }
 
  private:
-  // |delta_i| << (ACC_W - n), n = bit length of the largest magnitude. The OR
-  // of the magnitudes has the same bit length as their maximum.
+  // Taking a command stores the magnitudes and n, the bit length of the
+  // largest one (the OR of the magnitudes has the same bit length as their
+  // maximum); the engine shifts them as it loads the command. Same split as
+  // the RTL, which keeps each clock's logic path short.
   void load_buffer(const Inputs& in) {
-    acc_t mag[AXES], any = 0;
+    acc_t any = 0;
     for (int i = 0; i < AXES; ++i) {
       buf_neg_q_[i] = in.cmd_delta[i][ACC_W - 1];
-      mag[i] = buf_neg_q_[i] ? acc_t(-in.cmd_delta[i]) : in.cmd_delta[i];
-      any |= mag[i];
+      buf_mag_q_[i] = buf_neg_q_[i] ? acc_t(-in.cmd_delta[i]) : in.cmd_delta[i];
+      any |= buf_mag_q_[i];
     }
     int n = 0;
     for (int b = 0; b < ACC_W; ++b)
       if (any[b]) n = b + 1;
-    for (int i = 0; i < AXES; ++i) buf_inc_q_[i] = n == 0 ? acc_t(0) : acc_t(mag[i] << (ACC_W - n));
     buf_exp_q_ = n;
     buf_half_q_ = in.half_preload;
   }
 
+  // |delta| << (ACC_W - n); n = 0 only for an all-zero command.
+  static acc_t shifted(const acc_t& mag, unsigned n) {
+    return n == 0 ? acc_t(0) : acc_t(mag << (ACC_W - n));
+  }
+
   // One-entry command buffer.
   bool buf_valid_q_;
-  acc_t buf_inc_q_[AXES];
+  acc_t buf_mag_q_[AXES];
   bool buf_neg_q_[AXES];
   exp_t buf_exp_q_;
   bool buf_half_q_;
