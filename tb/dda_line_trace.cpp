@@ -1,8 +1,13 @@
 #include "dda_line_trace.h"
 
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+
 #include <cstdio>
-#include <cstdlib>
 #include <stdexcept>
+
+extern char** environ;
 
 namespace hwinterp::tb {
 
@@ -103,10 +108,20 @@ void DdaLineTrace::close() {
   buffer_.clear();
   vcd_->close();
   if (vcd_path_ != path_) {
-    const std::string cmd = "vcd2fst '" + vcd_path_ + "' '" + path_ + "' >/dev/null 2>&1";
-    const int rc = std::system(cmd.c_str());
+    // Run vcd2fst directly (no shell): any path works, quotes included.
+    std::string in = vcd_path_, out = path_, tool = "vcd2fst";
+    char* argv[] = {tool.data(), in.data(), out.data(), nullptr};
+    posix_spawn_file_actions_t quiet;
+    posix_spawn_file_actions_init(&quiet);
+    posix_spawn_file_actions_addopen(&quiet, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&quiet, 2, "/dev/null", O_WRONLY, 0);
+    pid_t pid = 0;
+    int status = -1;
+    const bool spawned = posix_spawnp(&pid, "vcd2fst", &quiet, nullptr, argv, environ) == 0;
+    posix_spawn_file_actions_destroy(&quiet);
+    if (spawned) waitpid(pid, &status, 0);
     std::remove(vcd_path_.c_str());
-    if (rc != 0)
+    if (!spawned || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
       throw std::runtime_error("vcd2fst could not write '" + path_ +
                                "' (is gtkwave installed? scripts/setup.sh installs it)");
   }
