@@ -29,7 +29,8 @@ module stepdir_axis #(
   output logic             dir_o
 );
   localparam logic [TIM_W-1:0] One = TIM_W'(1);
-  localparam logic [TIM_W-1:0] Sat = '1;
+  // Not '1: Yosys (<= 0.58) reads '1 in a typed localparam as 1 (YosysHQ/yosys#5465).
+  localparam logic [TIM_W-1:0] Sat = {TIM_W{1'b1}};
 
   // Cycle counters include the current cycle, so "held for n cycles" is cnt >= n.
   logic             step_q, step_d;

@@ -1,0 +1,250 @@
+#!/usr/bin/env bash
+# Synthesis handoff flow: per core variant, resources and Fmax.
+#
+# Usage: scripts/synth.sh [--variant NAME]... [--out DIR] [--generic-only]
+#                         [--seeds "1 2 3"] [--freq MHZ] [--check-netlist | --no-check-netlist]
+#                         [--cycles N]
+#
+#   --variant NAME   a variant of <build>/generated/variants.txt (repeatable;
+#                    default: all of them)
+#   --out DIR        output directory (default <build>/reports/synth)
+#   --generic-only   only the Yosys generic synthesis (seconds; a quick check
+#                    that the flow reads the RTL)
+#   --seeds LIST     nextpnr seeds for the HX8K runs; the first one is the fixed
+#                    seed, also used for UP5K (default "1 2 3")
+#   --freq MHZ       nextpnr target frequency (default 12; the achieved Fmax is
+#                    what the table reports)
+#   --check-netlist  simulate the Yosys generic netlist against the RTL in
+#                    lockstep (Verilator, random stimulus); on by default
+#                    except with --generic-only
+#   --cycles N       clocks of that check (default 1000000)
+#
+# Per variant (parameters from variants.txt, the configure-time copy of
+# cmake/cores.cmake; RTL files from HWINTERP_RTL_<core> in rtl/CMakeLists.txt):
+#   1. Yosys `synth -flatten -top <core>`: generic cells by type.
+#   2. `synth_ice40 -top <core>`: LUT4 / SB_CARRY / flip-flops of the bare core.
+#   3. `synth_ice40` of rtl/synth/<core>_harness.sv (the core behind a few
+#      registered pins) and nextpnr-ice40 --hx8k --package ct256 per seed:
+#      placed LUT/FF/LC and "Max frequency for clock".
+#   4. the same netlist with nextpnr-ice40 --up5k --package sg48: fits or not.
+#   5. (--check-netlist) rtl/synth/<core>_netlist_tb.sv: step 1's netlist
+#      against the RTL, every output every clock.
+# Writes <out>/synth.md, <out>/synth.json and prints the markdown table. Logs
+# and intermediate files stay in <out>/<variant>/. Honours HWINTERP_BUILD_DIR.
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+build=${HWINTERP_BUILD_DIR:-$root/build}
+
+die() { echo "synth: $*" >&2; exit 1; }
+usage() { sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2; exit 2; }
+
+variants=()
+out=""
+generic_only=0
+seeds="1 2 3"
+freq=12
+check=""
+cycles=1000000
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --variant) [ $# -ge 2 ] || usage; variants+=("$2"); shift 2 ;;
+    --out) [ $# -ge 2 ] || usage; out=$2; shift 2 ;;
+    --generic-only) generic_only=1; shift ;;
+    --seeds) [ $# -ge 2 ] || usage; seeds=$2; shift 2 ;;
+    --freq) [ $# -ge 2 ] || usage; freq=$2; shift 2 ;;
+    --check-netlist) check=1; shift ;;
+    --no-check-netlist) check=0; shift ;;
+    --cycles) [ $# -ge 2 ] || usage; cycles=$2; shift 2 ;;
+    -h|--help) usage ;;
+    *) echo "synth: unknown argument '$1'" >&2; usage ;;
+  esac
+done
+[ -n "$check" ] || check=$((1 - generic_only))
+read -r -a seed_list <<<"$seeds"
+[ ${#seed_list[@]} -ge 1 ] || die "--seeds needs at least one seed"
+for s in "${seed_list[@]}"; do
+  [[ $s =~ ^[0-9]+$ ]] || die "--seeds: '$s' is not a non-negative integer"
+done
+[[ $freq =~ ^[0-9]+([.][0-9]+)?$ ]] || die "--freq: '$freq' is not a frequency in MHz"
+[[ $cycles =~ ^[1-9][0-9]*$ ]] || die "--cycles: '$cycles' is not a positive integer"
+
+"$root/scripts/setup.sh"
+
+# Fail early and by name rather than halfway through a variant.
+need=(yosys python3)
+[ $generic_only -eq 1 ] || need+=(nextpnr-ice40)
+[ "$check" -eq 0 ] || need+=(verilator)
+for t in "${need[@]}"; do
+  command -v "$t" >/dev/null || die "$t not found (scripts/setup.sh installs it)"
+done
+
+out=${out:-$build/reports/synth}
+mkdir -p "$out"
+out=$(cd "$out" && pwd)
+
+# variants.txt is written at configure time; configure if it is missing or
+# older than the file it comes from, so a changed variant is never synthesized
+# with stale parameters.
+vfile=$build/generated/variants.txt
+if [ ! -f "$vfile" ] || [ "$root/cmake/cores.cmake" -nt "$vfile" ]; then
+  for t in cmake ninja; do
+    command -v "$t" >/dev/null || die "$t not found (scripts/setup.sh installs it)"
+  done
+  echo "synth: configuring $build for $vfile (log: $out/configure.log)" >&2
+  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >"$out/configure.log" 2>&1 ||
+    die "step 'cmake configure' failed; see $out/configure.log"
+  [ -f "$vfile" ] || die "configure did not write $vfile; see $out/configure.log"
+fi
+
+declare -A vline=()
+all=()
+while read -r name rest; do
+  [ -n "$name" ] || continue
+  vline[$name]=$rest
+  all+=("$name")
+done <"$vfile"
+[ ${#all[@]} -gt 0 ] || die "$vfile lists no variant"
+if [ ${#variants[@]} -eq 0 ]; then
+  variants=("${all[@]}")
+else
+  for v in "${variants[@]}"; do
+    [ -n "${vline[$v]+x}" ] || die "unknown variant '$v' (variants.txt has: ${all[*]})"
+  done
+fi
+
+# The RTL files of a core, from its HWINTERP_RTL_<core> list in rtl/CMakeLists.txt
+# (the list Verilator gets), so the file list is not repeated here.
+rtl_files() {
+  local core=$1
+  sed -n "/set(HWINTERP_RTL_${core}\$/,/)/p; /set(HWINTERP_RTL_${core}[[:space:]]/,/)/p" \
+    "$root/rtl/CMakeLists.txt" |
+    grep -oE '\$\{CMAKE_CURRENT_SOURCE_DIR\}/[^[:space:])]+' |
+    sed "s|\${CMAKE_CURRENT_SOURCE_DIR}|$root/rtl|"
+}
+
+# run_step STEP LOG CMD...: runs CMD with its output in LOG, appends the wall
+# time to $vdir/times.tsv, and stops the script naming the step and the log.
+run_step() {
+  local step=$1 log=$2 t0 t1
+  shift 2
+  t0=$(date +%s.%N)
+  if ! "$@" >"$log" 2>&1; then
+    echo "synth: step '$step' failed for $variant; see $log" >&2
+    grep -m5 -E 'ERROR|Error|error:' "$log" >&2 || tail -n 5 "$log" >&2
+    exit 1
+  fi
+  t1=$(date +%s.%N)
+  awk -v s="$step" -v a="$t0" -v b="$t1" 'BEGIN { printf "%s\t%.2f\n", s, b - a }' >>"$vdir/times.tsv"
+}
+
+# Per core: the RTL files, checked once. Yosys reads them as they are: a
+# construct it does not support stops it with an error naming the line (the
+# RTL is never rewritten here), and yosys_compat.py refuses the constructs
+# Yosys 0.23 reads wrongly without any message.
+declare -A yfiles=()
+prepare_core() {
+  local core=$1 srcdir files
+  srcdir=$out/src/$core
+  mapfile -t files < <(rtl_files "$core")
+  [ ${#files[@]} -gt 0 ] || die "no HWINTERP_RTL_${core} file list in $root/rtl/CMakeLists.txt"
+  for f in "${files[@]}"; do [ -f "$f" ] || die "RTL file $f (HWINTERP_RTL_${core}) not found"; done
+  mkdir -p "$srcdir"
+  python3 "$root/scripts/synth/yosys_compat.py" "${files[@]}" 2>"$srcdir/compat_check.log" ||
+    die "the $core RTL has constructs Yosys 0.23 misreads; see $srcdir/compat_check.log:
+$(cat "$srcdir/compat_check.log")"
+  yosys -q -l "$srcdir/read.log" -p "read_verilog -sv ${files[*]}" >/dev/null 2>&1 ||
+    die "step 'read' failed: Yosys $(yosys -V | awk '{print $2}') cannot read the $core RTL" \
+      "as it is; see $srcdir/read.log:
+$(grep -m3 'ERROR' "$srcdir/read.log" || tail -n 3 "$srcdir/read.log")"
+  yfiles[$core]="${files[*]}"
+}
+
+t_start=$(date +%s)
+for variant in "${variants[@]}"; do
+  read -r core params_kv <<<"${vline[$variant]}"
+  [ -n "${yfiles[$core]+x}" ] || prepare_core "$core"
+  vdir=$out/$variant
+  rm -rf "$vdir"
+  mkdir -p "$vdir"
+  : >"$vdir/times.tsv"
+  read -r -a kvs <<<"$params_kv"
+  chparam="chparam"
+  for kv in "${kvs[@]}"; do chparam+=" -set ${kv%%=*} ${kv#*=}"; done
+  read_rtl="read_verilog -sv ${yfiles[$core]}"
+  {
+    printf 'variant\t%s\ncore\t%s\nparams\t%s\n' "$variant" "$core" "$params_kv"
+    printf 'generic_only\t%s\nseeds\t%s\nfreq\t%s\ncheck\t%s\n' "$generic_only" "${seed_list[*]}" "$freq" "$check"
+    printf 'yosys\t%s\nnextpnr\t%s\n' "$(yosys -V)" \
+      "$(nextpnr-ice40 --version 2>&1 | head -n1 || true)"
+  } >"$vdir/info.tsv"
+  echo "synth: $variant ($core $params_kv)" >&2
+
+  # 1. Generic synthesis. -flatten: one figure for the whole core, as the
+  #    iCE40 flow (which flattens by default) gives.
+  run_step generic "$vdir/generic.log" yosys -p "$read_rtl; $chparam $core;
+    synth -flatten -top $core; tee -q -o $vdir/generic_stat.json stat -json;
+    rename $core ${core}_net; write_verilog -noattr $vdir/${core}_net.v"
+
+  if [ $generic_only -eq 0 ]; then
+    # 2. The bare core mapped to iCE40 cells (not placed: too many ports).
+    run_step ice40_core "$vdir/ice40_core.log" yosys -p "$read_rtl; $chparam $core;
+      synth_ice40 -top $core; tee -q -o $vdir/ice40_core_stat.json stat -json"
+
+    # 3. The harness, mapped once and placed per seed.
+    harness=$root/rtl/synth/${core}_harness.sv
+    [ -f "$harness" ] || die "no harness $harness for core $core"
+    run_step ice40_harness "$vdir/ice40_harness.log" yosys -p "$read_rtl $harness;
+      $chparam ${core}_harness; synth_ice40 -top ${core}_harness -json $vdir/harness.json;
+      tee -q -o $vdir/harness_stat.json stat -json"
+    for s in "${seed_list[@]}"; do
+      run_step "pnr_hx8k_seed$s" "$vdir/pnr_hx8k_seed$s.log" nextpnr-ice40 --hx8k --package ct256 \
+        --json "$vdir/harness.json" --seed "$s" --freq "$freq" --timing-allow-fail \
+        --report "$vdir/pnr_hx8k_seed$s.json"
+    done
+
+    # 4. UP5K: not fitting is a result, not a failure; any other error is.
+    s=${seed_list[0]}
+    ulog=$vdir/pnr_up5k_seed$s.log
+    t0=$(date +%s.%N)
+    if nextpnr-ice40 --up5k --package sg48 --json "$vdir/harness.json" --seed "$s" --freq "$freq" \
+      --timing-allow-fail --report "$vdir/pnr_up5k_seed$s.json" >"$ulog" 2>&1; then
+      printf 'up5k_fit\tyes\n' >>"$vdir/info.tsv"
+    elif over=$(awk '/Device utilisation/ { u = 1; next } u && !NF { exit }
+        u && match($0, /[A-Z_0-9]+: *[0-9]+\/ *[0-9]+/) {
+          split(substr($0, RSTART, RLENGTH), f, /[:\/ ]+/)
+          if (f[2] + 0 > f[3] + 0) printf "%s %s/%s ", f[1], f[2], f[3]
+        }' "$ulog") && [ -n "$over" ]; then
+      printf 'up5k_fit\tno\nup5k_reason\tdoes not fit: %s\n' "${over% }" >>"$vdir/info.tsv"
+    else
+      echo "synth: step 'pnr_up5k_seed$s' failed for $variant; see $ulog" >&2
+      grep -m5 'ERROR' "$ulog" >&2 || tail -n 5 "$ulog" >&2
+      exit 1
+    fi
+    awk -v s="pnr_up5k_seed$s" -v a="$t0" -v b="$(date +%s.%N)" \
+      'BEGIN { printf "%s\t%.2f\n", s, b - a }' >>"$vdir/times.tsv"
+  fi
+
+  # 5. The generic netlist against the RTL as Verilator reads it.
+  if [ "$check" -eq 1 ]; then
+    tb=$root/rtl/synth/${core}_netlist_tb.sv
+    if [ -f "$tb" ]; then
+      mapfile -t rtl < <(rtl_files "$core")
+      gflags=()
+      for kv in "${kvs[@]}"; do gflags+=("-G$kv"); done
+      run_step netlist_build "$vdir/netlist_build.log" verilator --binary -j "${HWINTERP_JOBS:-2}" \
+        -Wno-fatal -Wno-lint -Wno-style --x-assign unique --x-initial unique \
+        --Mdir "$vdir/netlist_obj" --top-module "${core}_netlist_tb" "${gflags[@]}" \
+        -GCYCLES="$cycles" "${rtl[@]}" "$vdir/${core}_net.v" "$tb" -o tb
+      run_step netlist_check "$vdir/netlist_check.log" "$vdir/netlist_obj/tb" +verilator+seed+1
+      grep -q 'netlist matches RTL' "$vdir/netlist_check.log" ||
+        die "step 'netlist_check' did not report a match for $variant; see $vdir/netlist_check.log"
+    else
+      echo "synth: no $tb; netlist check skipped for $variant" >&2
+      printf 'check\tno testbench\n' >>"$vdir/info.tsv"
+    fi
+  fi
+done
+
+python3 "$root/scripts/synth/synth_report.py" "$out" "${variants[@]}" ||
+  die "step 'report' failed (scripts/synth/synth_report.py)"
+echo "synth: done in $(($(date +%s) - t_start)) s; $out/synth.md, $out/synth.json" >&2
