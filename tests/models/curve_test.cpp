@@ -33,8 +33,10 @@ TEST(Curve, ExplicitAndLine) {
   const ExplicitCurve c([](double x) { return std::sin(x); }, [](double x) { return std::cos(x); },
                         [](double x) { return -std::sin(x); }, 0, 3);
   expect_derivatives_consistent(c);
-  EXPECT_GT(c.curvature(1.0), -1e300);
-  EXPECT_LT(c.curvature(1.0), 0);  // sin is concave on (0, pi): turns right
+  // y = sin x: curvature -sin x / (1 + cos^2 x)^(3/2), negative (turns right) on (0, pi).
+  const double k = -std::sin(1.0) / std::pow(1 + std::cos(1.0) * std::cos(1.0), 1.5);
+  EXPECT_NEAR(c.curvature(1.0), k, 1e-12);
+  EXPECT_LT(c.curvature(1.0), 0);
   const LineCurve l({0, 0}, {4, 3});
   EXPECT_DOUBLE_EQ(l.curvature(0.5), 0);
   EXPECT_NEAR((l.unit_normal(0.2) - Vec2(-0.6, 0.8)).norm(), 0, 1e-15);

@@ -150,8 +150,18 @@ TEST(RegressCli, SmallRegressionPassesAndReports) {
   EXPECT_NE(r.out.find("PASS"), std::string::npos);
   const std::string j = slurp(json);
   EXPECT_NE(j.find("\"passed\": true"), std::string::npos);
-  // Every variant in both modes: 4 runs of 17 cases.
-  EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n') > 68, true) << r.out;
+  // Every variant in both modes: 4 runs, each with the 16 paper-line cases
+  // (plain and half preload) and the random stream.
+  auto count = [&](const std::string& needle) {
+    size_t n = 0;
+    for (size_t at = j.find(needle); at != std::string::npos; at = j.find(needle, at + 1)) ++n;
+    return n;
+  };
+  EXPECT_EQ(count("\"cycles_per_second\""), 4u) << j;
+  EXPECT_EQ(count("\"case\": \"004_line1\""), 4u);
+  EXPECT_EQ(count("\"case\": \"004_line8_half\""), 4u);
+  EXPECT_EQ(count("\"case\": \"random\""), 4u);
+  EXPECT_EQ(count("\"passed\": false"), 0u);
 }
 
 }  // namespace
