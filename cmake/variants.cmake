@@ -11,6 +11,21 @@ file(MAKE_DIRECTORY ${HWINTERP_GENERATED_DIR})
 set_property(GLOBAL PROPERTY HWINTERP_VARIANTS "")
 file(WRITE ${HWINTERP_GENERATED_DIR}/variants.txt.in "")
 
+# hwinterp_write_generated(<name> <text>...): writes the texts, concatenated,
+# to ${HWINTERP_GENERATED_DIR}/<name>, touching the file only when it changed,
+# so a re-configure rebuilds nothing. (ARGV<i>, not ARGN: the texts are C++
+# and ARGN would split them at every ';'.)
+function(hwinterp_write_generated name)
+  set(text "")
+  math(EXPR last "${ARGC} - 1")
+  foreach(i RANGE 1 ${last})
+    string(APPEND text "${ARGV${i}}")
+  endforeach()
+  file(WRITE ${HWINTERP_GENERATED_DIR}/${name}.tmp "${text}")
+  file(COPY_FILE ${HWINTERP_GENERATED_DIR}/${name}.tmp ${HWINTERP_GENERATED_DIR}/${name}
+       ONLY_IF_DIFFERENT)
+endfunction()
+
 function(hwinterp_core_variant)
   cmake_parse_arguments(V "" "CORE;NAME" "PARAMS;DEFAULTS" ${ARGN})
   if(NOT V_CORE OR NOT V_NAME OR NOT V_PARAMS)
@@ -18,38 +33,42 @@ function(hwinterp_core_variant)
   endif()
   set(members "")
   set(gflags "")
+  set(pnames "")
+  set(pvalues "")
   foreach(kv IN LISTS V_PARAMS)
     string(REPLACE "=" ";" kvl "${kv}")
     list(GET kvl 0 k)
     list(GET kvl 1 v)
     string(APPEND members "  static constexpr int ${k} = ${v};\n")
+    string(APPEND pnames "\"${k}\", ")
+    string(APPEND pvalues "${v}, ")
     list(APPEND gflags "-G${k}=${v}")
   endforeach()
+  list(LENGTH V_PARAMS pcount)
+  # Every RTL parameter by name, for code that is not a template over Cfg.
+  string(APPEND members "  static constexpr int kParamCount = ${pcount};\n"
+    "  static constexpr const char* kParamNames[] = {${pnames}};\n"
+    "  static constexpr int kParamValues[] = {${pvalues}};\n")
   foreach(kv IN LISTS V_DEFAULTS)
     string(REPLACE "=" ";" kvl "${kv}")
     list(GET kvl 0 k)
     list(GET kvl 1 v)
     string(APPEND members "  static constexpr int ${k} = ${v};\n")
   endforeach()
-  file(WRITE ${HWINTERP_GENERATED_DIR}/${V_NAME}_cfg.h.tmp
+  hwinterp_write_generated(${V_NAME}_cfg.h
     "// Generated from cmake/cores.cmake; do not edit.\n#pragma once\n\n"
     "struct ${V_NAME}_cfg {\n"
     "  static constexpr const char* kCore = \"${V_CORE}\";\n"
     "  static constexpr const char* kVariant = \"${V_NAME}\";\n"
     "${members}};\n")
-  # Only touch the header when it changed, so a re-configure rebuilds nothing.
-  file(COPY_FILE ${HWINTERP_GENERATED_DIR}/${V_NAME}_cfg.h.tmp
-       ${HWINTERP_GENERATED_DIR}/${V_NAME}_cfg.h ONLY_IF_DIFFERENT)
   # The testbench's binding of the variant to its Verilated classes.
-  file(WRITE ${HWINTERP_GENERATED_DIR}/${V_NAME}_rtl.h.tmp
+  hwinterp_write_generated(${V_NAME}_rtl.h
     "// Generated from cmake/cores.cmake; do not edit.\n#pragma once\n\n"
     "#include \"${V_NAME}_cfg.h\"\n#include \"V${V_NAME}_cc.h\"\n#include \"V${V_NAME}_sc.h\"\n\n"
     "namespace hwinterp {\ntemplate <class Cfg>\nstruct RtlOf;  // the Verilated classes of a variant\n}\n\n"
     "template <>\nstruct hwinterp::RtlOf<${V_NAME}_cfg> {\n"
     "  using Cc = V${V_NAME}_cc;  // verilator --cc: the direct lockstep mode\n"
     "  using Sc = V${V_NAME}_sc;  // verilator --sc: the SystemC mode\n};\n")
-  file(COPY_FILE ${HWINTERP_GENERATED_DIR}/${V_NAME}_rtl.h.tmp
-       ${HWINTERP_GENERATED_DIR}/${V_NAME}_rtl.h ONLY_IF_DIFFERENT)
   set_property(GLOBAL APPEND PROPERTY HWINTERP_CORE_${V_CORE}_VARIANTS ${V_NAME})
   set_property(GLOBAL APPEND PROPERTY HWINTERP_CORES ${V_CORE})
   string(REPLACE ";" " " params_line "${V_PARAMS}")
@@ -60,26 +79,31 @@ function(hwinterp_core_variant)
 endfunction()
 
 # Called once after cores.cmake: publishes variants.txt for scripts/synth.sh
-# and, per core, <core>_variants.h: an X-macro over the core's variants so the
-# testbench instantiates each one without a hand-kept list.
+# and hwinterp_variants.h: the Verilated classes of every variant and an
+# X-macro over (core, variant) pairs, plus hwinterp_core_adapters.h, which
+# includes every core's testbench adapter (tb/cores/<core>/<core>_adapter.h),
+# so the testbench instantiates every core and variant without a hand-kept list.
 function(hwinterp_finish_variants)
   get_property(cores GLOBAL PROPERTY HWINTERP_CORES)
   list(REMOVE_DUPLICATES cores)
+  set(body "// Generated from cmake/cores.cmake; do not edit.\n#pragma once\n\n")
+  set(adapters "// Generated from cmake/cores.cmake; do not edit.\n#pragma once\n\n")
+  set(xs "")
+  set(core_xs "")
   foreach(core IN LISTS cores)
     get_property(vs GLOBAL PROPERTY HWINTERP_CORE_${core}_VARIANTS)
-    set(body "// Generated from cmake/cores.cmake; do not edit.\n#pragma once\n\n"
-             "namespace hwinterp {\ntemplate <class Cfg>\nstruct RtlOf;  // the Verilated classes of a variant\n}\n\n")
-    set(xs "")
     foreach(v IN LISTS vs)
       string(APPEND body "#include \"${v}_rtl.h\"\n")
-      string(APPEND xs " X(${v})")
+      string(APPEND xs " X(${core}, ${v})")
     endforeach()
-    string(TOUPPER ${core} CORE)
-    string(APPEND body "\n#define HWINTERP_${CORE}_VARIANTS(X)${xs}\n")
-    file(WRITE ${HWINTERP_GENERATED_DIR}/${core}_variants.h.tmp "${body}")
-    file(COPY_FILE ${HWINTERP_GENERATED_DIR}/${core}_variants.h.tmp
-         ${HWINTERP_GENERATED_DIR}/${core}_variants.h ONLY_IF_DIFFERENT)
+    string(APPEND adapters "#include \"tb/cores/${core}/${core}_adapter.h\"\n")
+    string(APPEND core_xs " X(${core})")
   endforeach()
+  string(APPEND body "\n// X(core, variant) for every variant, in cores.cmake order.\n"
+    "#define HWINTERP_VARIANTS(X)${xs}\n"
+    "// X(core) for every core, in cores.cmake order.\n#define HWINTERP_CORES(X)${core_xs}\n")
+  hwinterp_write_generated(hwinterp_variants.h "${body}")
+  hwinterp_write_generated(hwinterp_core_adapters.h "${adapters}")
   file(COPY_FILE ${HWINTERP_GENERATED_DIR}/variants.txt.in
        ${HWINTERP_GENERATED_DIR}/variants.txt ONLY_IF_DIFFERENT)
 endfunction()

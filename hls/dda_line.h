@@ -3,6 +3,7 @@
 // rtl/dda_line.sv documents the behaviour; models/dda_line_model.h states its
 // mathematics. Synthesizable subset: SystemC integers, fixed-size arrays,
 // loops bounded by template parameters, no floats, no heap.
+// hwinterp::hls::StepperModule<DdaLine<Cfg>> is its SC_MODULE.
 //
 // `Cfg` is a generated variant struct (cmake/cores.cmake): AXES, ACC_W, POS_W,
 // TIM_W, FEED_W.
@@ -10,13 +11,17 @@
 
 #include <systemc>
 
-#include "hls/stepdir_axis.h"
+#include "hls/feed_accum.h"
+#include "hls/pin_types.h"
+#include "hls/step_stage.h"
+#include "hls/stepper_io.h"
 
 namespace hwinterp::hls {
 
-template <class Cfg>
+template <class CfgT>
 class DdaLine {
  public:
+  using Cfg = CfgT;
   static constexpr int AXES = Cfg::AXES;
   static constexpr int ACC_W = Cfg::ACC_W;
   static constexpr int POS_W = Cfg::POS_W;
@@ -36,26 +41,26 @@ class DdaLine {
   using sum_t = sc_dt::sc_uint<ACC_W + 1>;
   using left_t = sc_dt::sc_uint<ACC_W + 1>;
   using exp_t = sc_dt::sc_uint<EXP_W>;
-  using pos_t = sc_dt::sc_uint<POS_W>;
-  using feed_t = sc_dt::sc_uint<FEED_W>;
-  using Settings = StepdirSettings<TIM_W>;
 
-  // Pins sampled at a rising edge (rst_n is the asynchronous active-low reset).
-  struct Inputs {
-    bool rst_n = false;
-    bool cmd_valid = false;
-    acc_t cmd_delta[AXES] = {};  // two's complement, one per axis
-    sc_dt::sc_uint<FEED_W + 1> feed = 0;
+  // The core's own inputs: cmd_delta_i (two's complement, one per axis) and
+  // half_preload_i (sampled with the command).
+  struct Own {
+    acc_t delta[AXES] = {};
     bool half_preload = false;
-    Settings timing = {};
   };
+  using Inputs = StepperInputs<Own, FEED_W, TIM_W>;
+  using Outputs = StepperOutputs<AXES, POS_W>;
 
-  // Registered outputs after the edge.
-  struct Outputs {
-    bool cmd_ready;
-    sc_dt::sc_uint<AXES> step, dir;
-    pos_t pos[AXES];
-    bool busy, done;
+  // The own ports of the SC_MODULE face (hls/stepper_module.h).
+  struct OwnPorts {
+    sc_core::sc_in<pin_t<AXES * ACC_W>> cmd_delta_i{"cmd_delta_i"};
+    sc_core::sc_in<bool> half_preload_i{"half_preload_i"};
+    void read(Own& own) const {
+      const pin_t<AXES* ACC_W>& delta = cmd_delta_i.read();
+      for (int i = 0; i < AXES; ++i)
+        own.delta[i] = pin_field<AXES * ACC_W>(delta, i * ACC_W, ACC_W);
+      own.half_preload = half_preload_i.read();
+    }
   };
 
   DdaLine() { reset(); }
@@ -66,7 +71,6 @@ class DdaLine {
     buf_half_q_ = false;
     act_q_ = false;
     left_q_ = 0;
-    feed_q_ = 0;
     done_q_ = false;
     for (int i = 0; i < AXES; ++i) {
       buf_mag_q_[i] = 0;
@@ -74,9 +78,9 @@ class DdaLine {
       acc_q_[i] = 0;
       inc_q_[i] = 0;
       neg_q_[i] = false;
-      pos_q_[i] = 0;
-      axis_[i].reset();
     }
+    feed_.reset();
+    out_.reset();
   }
 
   // One rising clock edge (or, with rst_n low, the reset).
@@ -86,35 +90,31 @@ class DdaLine {
       return;
     }
     // Combinational part, from the current registers and the inputs.
-    bool carry[AXES], moves[AXES], stall = false;
+    bool carry[AXES], fire[AXES], stall = false;
     sum_t sum[AXES];
+    typename StepStage<AXES, POS_W, TIM_W>::Request want;
     for (int i = 0; i < AXES; ++i) {
       sum[i] = sum_t(acc_q_[i]) + sum_t(inc_q_[i]);
       carry[i] = sum[i][ACC_W];
-      moves[i] = act_q_ && inc_q_[i] != 0;
-      if (carry[i] && !axis_[i].ready(in.timing, moves[i], neg_q_[i])) stall = true;
+      want.want_valid[i] = act_q_ && inc_q_[i] != 0;
+      want.want_dir[i] = neg_q_[i];
+      if (carry[i] && !out_.ready(i, in.timing, want)) stall = true;
     }
-    const bool feed_full = in.feed[FEED_W];
-    const sc_dt::sc_uint<FEED_W + 1> feed_sum =
-        sc_dt::sc_uint<FEED_W + 1>(feed_q_) + in.feed.range(FEED_W - 1, 0);
-    const bool tick = act_q_ && (feed_full || feed_sum[FEED_W]);
-    const bool advance = tick && !stall;
+    const bool tick = feed_.tick(in.feed, act_q_);
+    const bool advance = tick && !stall && !in.abort;
     const bool last = advance && left_q_ == 1;
-    const bool buf_take = buf_valid_q_ && (!act_q_ || last);
+    const bool buf_take = buf_valid_q_ && (!act_q_ || last) && !in.abort;
     const bool cmd_take = in.cmd_valid && !buf_valid_q_;
 
-    // Output stage first: it reads the engine registers before they update.
-    for (int i = 0; i < AXES; ++i)
-      axis_[i].tick(in.timing, moves[i], neg_q_[i], advance && carry[i]);
+    // Output stage and feed first: they read the engine registers before they update.
+    for (int i = 0; i < AXES; ++i) fire[i] = advance && carry[i];
+    out_.clock(in.timing, want, fire);
+    feed_.clock(in.feed, act_q_, stall);
 
     // Engine registers.
-    if (act_q_ && !feed_full && !(tick && stall)) feed_q_ = feed_sum.range(FEED_W - 1, 0);
     if (advance) {
       left_q_ = left_q_ - 1;
-      for (int i = 0; i < AXES; ++i) {
-        acc_q_[i] = sum[i].range(ACC_W - 1, 0);
-        if (carry[i]) pos_q_[i] = neg_q_[i] ? pos_t(pos_q_[i] - 1) : pos_t(pos_q_[i] + 1);
-      }
+      for (int i = 0; i < AXES; ++i) acc_q_[i] = sum[i].range(ACC_W - 1, 0);
       if (last) act_q_ = false;
     }
     if (buf_take) {
@@ -126,9 +126,10 @@ class DdaLine {
         neg_q_[i] = buf_neg_q_[i];
       }
     }
+    if (in.abort) act_q_ = false;
     // Command buffer: magnitudes and exponent of the offered command.
-    if (cmd_take) load_buffer(in);
-    buf_valid_q_ = cmd_take || (buf_valid_q_ && !buf_take);
+    if (cmd_take) load_buffer(in.cmd);
+    buf_valid_q_ = !in.abort && (cmd_take || (buf_valid_q_ && !buf_take));
     done_q_ = last;
   }
 
@@ -137,14 +138,12 @@ class DdaLine {
     o.cmd_ready = !buf_valid_q_;
     o.step = 0;
     o.dir = 0;
-    bool any_step = false;
     for (int i = 0; i < AXES; ++i) {
-      o.step[i] = axis_[i].step();
-      o.dir[i] = axis_[i].dir();
-      o.pos[i] = pos_q_[i];
-      any_step = any_step || axis_[i].step();
+      o.step[i] = out_.step(i);
+      o.dir[i] = out_.dir(i);
+      o.pos[i] = out_.pos(i);
     }
-    o.busy = act_q_ || buf_valid_q_ || any_step;
+    o.busy = act_q_ || buf_valid_q_ || out_.any_step();
     o.done = done_q_;
     return o;
   }
@@ -154,18 +153,18 @@ class DdaLine {
   // largest one (the OR of the magnitudes has the same bit length as their
   // maximum); the engine shifts them as it loads the command. Same split as
   // the RTL, which keeps each clock's logic path short.
-  void load_buffer(const Inputs& in) {
+  void load_buffer(const Own& cmd) {
     acc_t any = 0;
     for (int i = 0; i < AXES; ++i) {
-      buf_neg_q_[i] = in.cmd_delta[i][ACC_W - 1];
-      buf_mag_q_[i] = buf_neg_q_[i] ? acc_t(-in.cmd_delta[i]) : in.cmd_delta[i];
+      buf_neg_q_[i] = cmd.delta[i][ACC_W - 1];
+      buf_mag_q_[i] = buf_neg_q_[i] ? acc_t(-cmd.delta[i]) : cmd.delta[i];
       any |= buf_mag_q_[i];
     }
     int n = 0;
     for (int b = 0; b < ACC_W; ++b)
       if (any[b]) n = b + 1;
     buf_exp_q_ = n;
-    buf_half_q_ = in.half_preload;
+    buf_half_q_ = cmd.half_preload;
   }
 
   // |delta| << (ACC_W - n); n = 0 only for an all-zero command.
@@ -185,11 +184,9 @@ class DdaLine {
   acc_t inc_q_[AXES];
   bool neg_q_[AXES];
   left_t left_q_;
-  feed_t feed_q_;
-  pos_t pos_q_[AXES];
   bool done_q_;
-  // Output stage.
-  StepdirAxis<TIM_W> axis_[AXES];
+  FeedAccum<FEED_W> feed_;
+  StepStage<AXES, POS_W, TIM_W> out_;
 };
 
 }  // namespace hwinterp::hls

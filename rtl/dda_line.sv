@@ -1,6 +1,6 @@
 // dda_line: N-axis digital differential analyzer line interpolator.
 //
-// command stream -> buffer (|delta|, exponent) -> DDA engine (feed-rate gated) -> stepdir_axis x N
+// command stream -> buffer (|delta|, exponent) -> DDA engine (feed_accum gated) -> step_stage
 //
 // Command: cmd_delta_i holds one signed (two's complement) ACC_W-bit delta in
 // steps per axis, axis i in bits [i*ACC_W +: ACC_W]; it is taken on a clock
@@ -19,14 +19,23 @@
 // command registers the magnitudes and n (negate, OR, priority encode); the
 // engine shifts them as it loads the command.
 //
-// Feed: each clock a FEED_W-bit phase accumulator adds feed_i; its carry lets
-// the engine do one iteration. feed_i >= 2^FEED_W is full feed (every clock).
-// The engine stalls, and the feed phase holds, whenever an axis that would
-// step is not ready (step/dir timing): steps are delayed, never dropped.
+// Feed (rtl/feed_accum.sv): each clock a FEED_W-bit phase accumulator adds
+// feed_i; its carry lets the engine do one iteration. feed_i >= 2^FEED_W is
+// full feed (every clock), feed_i = 0 holds the move. The engine stalls, and
+// the feed phase holds, whenever an axis that would step is not ready
+// (step/dir timing, rtl/step_stage.sv): steps are delayed, never dropped.
+//
+// Abort: abort_i high at a clock edge ends the running command and drops the
+// buffered one (a command transferred on that same edge too); no iteration
+// runs on that edge, so no new step starts from it on. A pulse already high
+// keeps its full length: busy_o falls at most max(step_len_i, 1) - 1 clocks
+// after the abort edge, and pos_o then equals the pulses on the wire, a point
+// the command's path visits. No done_o for an aborted command. The core takes
+// commands again from the next clock on.
 //
 // Status: busy_o while a command is buffered or running or a pulse is high;
-// done_o pulses for one clock, with the last iteration's steps, per command;
-// pos_o holds the signed position of each axis, axis i in bits
+// done_o pulses for one clock, with the last iteration's steps, per completed
+// command; pos_o holds the signed position of each axis, axis i in bits
 // [i*POS_W +: POS_W] (wraps at POS_W bits; the testbench refuses commands that
 // would wrap it).
 //
@@ -53,6 +62,7 @@ module dda_line #(
   input  logic [TIM_W-1:0]       step_space_i,
   input  logic [TIM_W-1:0]       dir_setup_i,
   input  logic [TIM_W-1:0]       dir_hold_i,
+  input  logic                   abort_i,  // end the move, drop the buffer (one clock)
   // Step/dir and status
   output logic [AXES-1:0]        step_o,
   output logic [AXES-1:0]        dir_o,
@@ -88,34 +98,35 @@ module dda_line #(
   end
 
   // ---------------------------------------------------------------------------
-  // Engine: iteration count, feed phase and the per-axis slices below.
+  // Engine: iteration count, feed and the per-axis slices below.
   logic                  act_q, act_d;  // a command is running
   logic [LeftW-1:0]      left_q, left_d;  // iterations still to do
-  logic [FEED_W-1:0]     feed_q, feed_d;
   logic                  done_q;
   logic [AXES-1:0]       carry;  // this iteration steps the axis
+  logic [AXES-1:0]       moves;  // the running command moves the axis at all
+  logic [AXES-1:0]       neg;  // ...in the negative direction
   logic [AXES-1:0]       ready;  // the axis may start a pulse on the next clock
-  logic [FEED_W:0]       feed_sum;
-  logic [FEED_W-1:0]     feed_phase;  // feed_sum without its carry
-  logic                  feed_full, tick, stall, advance, last;
+  logic                  tick, stall, advance, last;
 
-  assign feed_full  = feed_i[FEED_W];
-  assign feed_sum   = {1'b0, feed_q} + {1'b0, feed_i[FEED_W-1:0]};
-  assign feed_phase = feed_sum[FEED_W-1:0];
-  assign tick       = act_q && (feed_full || feed_sum[FEED_W]);
-  assign stall      = |(carry & ~ready);
-  assign advance    = tick && !stall;
-  assign last       = advance && (left_q == LeftW'(1));
-  assign buf_take   = buf_valid_q && (!act_q || last);
+  assign stall    = |(carry & ~ready);
+  assign advance  = tick && !stall && !abort_i;
+  assign last     = advance && (left_q == LeftW'(1));
+  assign buf_take = buf_valid_q && (!act_q || last) && !abort_i;
+
+  feed_accum #(
+    .FEED_W(FEED_W)
+  ) u_feed (
+    .clk_i,
+    .rst_ni,
+    .feed_i,
+    .run_i (act_q),
+    .hold_i(stall),
+    .tick_o(tick)
+  );
 
   always_comb begin
     act_d  = act_q;
     left_d = left_q;
-    // The feed phase runs while a command runs, and holds on a stalled tick so
-    // that the iteration is retried on the next clock.
-    feed_d = feed_q;
-    if (act_q && !feed_full && !(tick && stall)) feed_d = feed_phase;
-
     if (advance) begin
       left_d = left_q - LeftW'(1);
       if (last) act_d = 1'b0;
@@ -124,7 +135,8 @@ module dda_line #(
       act_d  = 1'b1;
       left_d = LeftW'(1) << buf_exp_q;
     end
-    buf_valid_d = cmd_take || (buf_valid_q && !buf_take);
+    if (abort_i) act_d = 1'b0;
+    buf_valid_d = !abort_i && (cmd_take || (buf_valid_q && !buf_take));
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -134,7 +146,6 @@ module dda_line #(
       buf_half_q  <= 1'b0;
       act_q       <= 1'b0;
       left_q      <= '0;
-      feed_q      <= '0;
       done_q      <= 1'b0;
     end else begin
       buf_valid_q <= buf_valid_d;
@@ -144,14 +155,13 @@ module dda_line #(
       end
       act_q  <= act_d;
       left_q <= left_d;
-      feed_q <= feed_d;
       done_q <= last;
     end
   end
 
   // ---------------------------------------------------------------------------
-  // Per-axis slices: magnitude of the offered delta, its buffer entry, the
-  // accumulator, the position counter and the output stage.
+  // Per-axis slices: magnitude of the offered delta, its buffer entry and the
+  // accumulator.
   for (genvar i = 0; i < AXES; i++) begin : g_axis
     logic [ACC_W-1:0] delta;
     logic             cmd_neg;
@@ -160,9 +170,7 @@ module dda_line #(
     logic [ACC_W-1:0] acc_q, acc_d;
     logic [ACC_W-1:0] inc_q;
     logic             neg_q;
-    logic [POS_W-1:0] pos_q, pos_d;
     logic [ACC_W:0]   sum;
-    logic             moves;  // the running command moves this axis at all
 
     assign delta   = cmd_delta_i[i*ACC_W +: ACC_W];
     assign cmd_neg = delta[ACC_W-1];
@@ -170,12 +178,11 @@ module dda_line #(
 
     assign sum      = {1'b0, acc_q} + {1'b0, inc_q};
     assign carry[i] = sum[ACC_W];
-    assign moves    = act_q && (inc_q != '0);
+    assign moves[i] = act_q && (inc_q != '0);
+    assign neg[i]   = neg_q;
     // A new command restarts the accumulator at 0 or one half.
     assign acc_d = buf_take ? (buf_half_q ? {1'b1, {(ACC_W - 1) {1'b0}}} : '0) :
                    advance  ? sum[ACC_W-1:0] : acc_q;
-    assign pos_d = !(advance && carry[i]) ? pos_q :
-                   neg_q ? pos_q - POS_W'(1) : pos_q + POS_W'(1);
 
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
@@ -184,7 +191,6 @@ module dda_line #(
         acc_q     <= '0;
         inc_q     <= '0;
         neg_q     <= 1'b0;
-        pos_q     <= '0;
       end else begin
         if (cmd_take) begin
           buf_mag_q <= cmd_mag[i*ACC_W +: ACC_W];
@@ -196,29 +202,31 @@ module dda_line #(
           neg_q <= buf_neg_q;
         end
         acc_q <= acc_d;
-        pos_q <= pos_d;
       end
     end
-
-    stepdir_axis #(
-      .TIM_W(TIM_W)
-    ) u_stepdir (
-      .clk_i,
-      .rst_ni,
-      .step_len_i,
-      .step_space_i,
-      .dir_setup_i,
-      .dir_hold_i,
-      .want_valid_i(moves),
-      .want_dir_i  (neg_q),
-      .fire_i      (advance && carry[i]),
-      .ready_o     (ready[i]),
-      .step_o      (step_o[i]),
-      .dir_o       (dir_o[i])
-    );
-
-    assign pos_o[i*POS_W +: POS_W] = pos_q;
   end
+
+  // ---------------------------------------------------------------------------
+  // Output stage: step/dir timing and position counters.
+  step_stage #(
+    .AXES (AXES),
+    .POS_W(POS_W),
+    .TIM_W(TIM_W)
+  ) u_out (
+    .clk_i,
+    .rst_ni,
+    .step_len_i,
+    .step_space_i,
+    .dir_setup_i,
+    .dir_hold_i,
+    .want_valid_i(moves),
+    .want_dir_i  (neg),
+    .fire_i      ({AXES{advance}} & carry),
+    .ready_o     (ready),
+    .step_o,
+    .dir_o,
+    .pos_o
+  );
 
   assign busy_o = act_q || buf_valid_q || (|step_o);
   assign done_o = done_q;

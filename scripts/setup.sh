@@ -7,7 +7,7 @@ packages=(
   g++ cmake ninja-build pkg-config
   libsystemc-dev verilator libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev
   yosys nextpnr-ice40 fpga-icestorm fpga-icestorm-chipdb iverilog gtkwave
-  python3 python3-matplotlib z3
+  python3 python3-matplotlib z3 nlohmann-json3-dev
 )
 
 missing=()

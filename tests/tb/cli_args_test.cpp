@@ -1,4 +1,4 @@
-#include "cli_args.h"
+#include "tb/cli/cli_args.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // The step/dir timing monitor on hand-made waveforms: each rule met exactly
 // at its limit passes, one cycle short fails with the right numbers.
-#include "stepdir_monitor.h"
+#include "tb/monitor/stepdir_monitor.h"
 
 #include <gtest/gtest.h>
 

@@ -1,0 +1,4 @@
+stepdir_axis.sv
+step_stage.sv
+feed_accum.sv
+dda_line.sv

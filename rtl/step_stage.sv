@@ -1,0 +1,61 @@
+// The output stage shared by every core: per axis a stepdir_axis (hostmot2
+// step/dir timing, see rtl/stepdir_axis.sv) and a signed position counter.
+//
+// The engine says, per axis, whether the running command moves the axis at
+// all (want_valid_i) and in which direction (want_dir_i: 1 = negative); the
+// stage answers whether a pulse may start on the next clock (ready_o). The
+// engine fires only ready axes (fire_i; it stalls otherwise), so no step is
+// ever lost and no timing is ever violated. A fired axis raises step_o on the
+// next clock and its position counter counts the step on the same clock:
+// pos_o always equals the pulses that reached the wire.
+//
+// Per-axis vectors are flat with `+:` slices (Yosys 0.23 cannot parse
+// multi-dimensional packed arrays; Icarus 11 cannot index them with a loop
+// variable).
+module step_stage #(
+  parameter int AXES  = 2,   // axes
+  parameter int POS_W = 32,  // position counter width (wraps)
+  parameter int TIM_W = 16   // width of the timing settings and counters
+) (
+  input  logic                  clk_i,
+  input  logic                  rst_ni,
+  // hostmot2 timing in clocks (0 acts as 1), applied from the clock that samples them
+  input  logic [TIM_W-1:0]      step_len_i,
+  input  logic [TIM_W-1:0]      step_space_i,
+  input  logic [TIM_W-1:0]      dir_setup_i,
+  input  logic [TIM_W-1:0]      dir_hold_i,
+  input  logic [AXES-1:0]       want_valid_i,  // the running command moves the axis
+  input  logic [AXES-1:0]       want_dir_i,    // ...in this direction (1: negative)
+  input  logic [AXES-1:0]       fire_i,        // start a pulse next clock (ready axes only)
+  output logic [AXES-1:0]       ready_o,       // a pulse may start on the next clock
+  output logic [AXES-1:0]       step_o,
+  output logic [AXES-1:0]       dir_o,         // 1: negative motion
+  output logic [AXES*POS_W-1:0] pos_o          // axis i in bits [i*POS_W +: POS_W]
+);
+  for (genvar i = 0; i < AXES; i++) begin : g_axis
+    logic [POS_W-1:0] pos_q;
+
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) pos_q <= '0;
+      else if (fire_i[i]) pos_q <= want_dir_i[i] ? pos_q - POS_W'(1) : pos_q + POS_W'(1);
+    end
+    assign pos_o[i*POS_W +: POS_W] = pos_q;
+
+    stepdir_axis #(
+      .TIM_W(TIM_W)
+    ) u_stepdir (
+      .clk_i,
+      .rst_ni,
+      .step_len_i,
+      .step_space_i,
+      .dir_setup_i,
+      .dir_hold_i,
+      .want_valid_i(want_valid_i[i]),
+      .want_dir_i  (want_dir_i[i]),
+      .fire_i      (fire_i[i]),
+      .ready_o     (ready_o[i]),
+      .step_o      (step_o[i]),
+      .dir_o       (dir_o[i])
+    );
+  end
+endmodule

@@ -1,0 +1,181 @@
+// hwinterp cosim: one lockstep co-simulation of any core (HLS vs RTL, both vs
+// the reference model), from the core's own stimulus options, a job file or
+// a seeded random stream, in the SystemC or the direct mode. The cores and
+// their variants come from the registry (cmake/cores.cmake); this file knows
+// none of them.
+#include <cstring>
+#include <iostream>
+#include <memory>
+#include <random>
+
+#include "tb/cli/subcommand.h"
+#include "tb/lockstep/registry.h"
+#include "tb/report/cosim_report.h"
+
+namespace hwinterp::cli {
+
+namespace {
+
+std::string shell_quote(const std::string& s) {
+  if (!s.empty() && s.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                        "0123456789-_./=,:@") == std::string::npos)
+    return s;
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+// The command that replays this run exactly, with a trace of the last cycles.
+std::string replay_command(int argc, char** argv, int first, const Args& args, uint64_t seed) {
+  std::string cmd = "hwinterp cosim";
+  for (int i = first; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--json" || a == "--vcd" || a == "--fst" || a == "--trace-window") {
+      ++i;  // replaced below
+      continue;
+    }
+    if (a.rfind("--json=", 0) == 0 || a.rfind("--vcd=", 0) == 0 || a.rfind("--fst=", 0) == 0 ||
+        a.rfind("--trace-window=", 0) == 0)
+      continue;
+    cmd += " " + shell_quote(a);
+  }
+  if (args.given("random") && !args.given("seed")) cmd += " --seed " + std::to_string(seed);
+  return cmd + " --vcd mismatch.vcd --trace-window 200";
+}
+
+// "KIND@CYCLE" for the --inject test hook.
+tb::FaultPlan parse_injection(const Args& args) {
+  tb::FaultPlan plan;
+  if (!args.given("inject")) return plan;
+  const std::string v = args.str("inject");
+  const auto at = v.find('@');
+  const std::string kind = v.substr(0, at);
+  if (at == std::string::npos || (kind != "mismatch" && kind != "glitch"))
+    throw UsageError("--inject: '" + v + "' is not mismatch@CYCLE or glitch@CYCLE");
+  const int64_t cycle = parse_integer(v.substr(at + 1), "--inject");
+  if (cycle < 1) throw UsageError("--inject: cycle " + v.substr(at + 1) + " must be >= 1");
+  (kind == "mismatch" ? plan.flip_hls_step_at : plan.glitch_step_at) = static_cast<uint64_t>(cycle);
+  return plan;
+}
+
+// The --core value before the options are declared: the core's own options
+// depend on it. Empty when absent.
+std::string core_argument(int argc, char** argv, int first) {
+  for (int i = first; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--core") && i + 1 < argc) return argv[i + 1];
+    if (!std::strncmp(argv[i], "--core=", 7)) return argv[i] + 7;
+  }
+  return "";
+}
+
+int run_cosim(int argc, char** argv, int first) {
+  Args args("cosim",
+            "Lockstep co-simulation of a core: HLS and RTL compared on every clock, both\n"
+            "checked against the reference model, step/dir timing monitored on every axis.\n"
+            "Stimulus: exactly one of --job, --random or the core's own (see --core NAME --help).\n"
+            "Cores and variants (cmake/cores.cmake): " +
+                tb::core_list());
+  args.option("core", "NAME", "the core to simulate (see above)")
+      .option("variant", "NAME", "the variant (default: the first, or the first with --axes)")
+      .option("axes", "N", "the first variant with N axes")
+      .option("job", "FILE", "a job file (cases, commands, settings, aborts; see README)")
+      .option("random", "N", "a seeded random stream of N commands")
+      .option("seed", "S", "seed of --random (printed; a fresh one when omitted)")
+      .option("mode", "MODE", "systemc (SC_MODULE + verilator --sc) or direct (tick() + --cc)",
+              "systemc")
+      .option("feed", "full|WORD|F", "feed: full, a feed word, or a clock fraction like 0.25")
+      .option("step-len", "N", "step pulse length, clocks (default from the variant)")
+      .option("step-space", "N", "minimum low time between steps, clocks")
+      .option("dir-setup", "N", "dir setup before a step, clocks")
+      .option("dir-hold", "N", "dir hold after a step, clocks")
+      .option("abort-at", "CYCLE", "raise abort_i for one clock at this clock edge of the run")
+      .option("vcd", "FILE", "write a VCD trace (inputs, HLS and RTL outputs)")
+      .option("fst", "FILE", "write an FST trace (via vcd2fst)")
+      .option("trace-window", "N", "trace only the last N cycles (e.g. before a mismatch)")
+      .option("path-csv", "FILE",
+              "write the lattice path (start, command targets, every move) as CSV for "
+              "scripts/plot_paths.py")
+      .option("dump-frames", "FILE",
+              "write the input frames, one hex line a clock, and FILE.sv, a Verilog "
+              "testbench that replays them into the RTL")
+      .option("inject", "KIND@CYCLE",
+              "test hook: mismatch@C flips the HLS step_o[0] before the comparison, "
+              "glitch@C the observed step_o[0] after it");
+  const std::string core_name = core_argument(argc, argv, first);
+  const tb::CoreEntry* core = nullptr;
+  if (!core_name.empty()) {
+    core = &tb::find_core(core_name);
+    core->declare_options(args);
+  }
+  if (parse_or_help(args, argc, argv, first)) return kExitOk;
+  if (!core) throw UsageError("--core is required (cores: " + tb::core_list() + ")");
+
+  const tb::VariantEntry& variant = core->select(args);
+  const std::string mode = args.choice("mode", {"systemc", "direct"});
+  int sources = args.given("job") + args.given("random");
+  std::string source_names = "--job, --random";
+  for (const auto& s : core->sources) {
+    sources += args.given(s);
+    source_names += ", --" + s;
+  }
+  if (sources != 1)
+    throw UsageError("give exactly one of " + source_names + " (" + std::to_string(sources) +
+                     " given)");
+  if (args.given("seed") && !args.given("random"))
+    throw UsageError("--seed " + args.str("seed") + " goes with --random");
+  if (args.given("vcd") && args.given("fst")) throw UsageError("give one of --vcd and --fst");
+  if (args.given("trace-window") && !args.given("vcd") && !args.given("fst"))
+    throw UsageError("--trace-window " + args.str("trace-window") + " needs --vcd or --fst");
+
+  tb::BenchOptions options;
+  options.mode = mode;
+  if (args.given("random"))
+    options.seed = args.given("seed") ? args.seed("seed") : std::random_device{}();
+  options.faults = parse_injection(args);
+  options.trace_path = args.given("vcd")   ? args.str("vcd")
+                       : args.given("fst") ? args.str("fst")
+                                           : "";
+  if (args.given("dump-frames")) options.frames_path = args.str("dump-frames");
+  if (args.given("path-csv")) options.path_csv = args.str("path-csv");
+  if (args.given("trace-window"))
+    options.trace_window = static_cast<uint64_t>(args.integer("trace-window", 1, 100000000));
+  if (args.given("abort-at"))
+    options.abort_at = static_cast<uint64_t>(args.integer("abort-at", 1, INT64_MAX));
+
+  // Validates the stimulus and opens every output file before the run.
+  const std::unique_ptr<tb::BenchRun> run = variant.from_args(args, options);
+  std::cout << "hwinterp cosim: " << core->name << " (" << variant.limits.variant << "), mode "
+            << mode;
+  if (args.given("random")) std::cout << ", seed " << options.seed;
+  std::cout << ", " << run->case_count() << (run->case_count() == 1 ? " case\n" : " cases\n")
+            << std::flush;
+  if (mode == "direct")
+    run->run_direct();
+  else
+    tb::run_systemc({run.get()});
+  run->close();
+
+  const auto& results = run->results();
+  const bool ok = tb::all_passed(results);
+  std::cout << tb::case_table(results) << tb::failure_details(results);
+  Json report = tb::aggregate_json(results);
+  if (!ok) {
+    const std::string replay = replay_command(argc, argv, first, args, options.seed);
+    std::cout << "replay: " << replay << "\n";
+    report["replay"] = replay;
+  }
+  if (args.given("abort-at") && report["abort"].is_null())
+    std::cout << "note: --abort-at " << args.str("abort-at") << " is past the run's "
+              << run->cycles() << " clocks: no abort happened\n";
+  if (!options.trace_path.empty()) std::cout << "trace: " << options.trace_path << "\n";
+  std::cout << (ok ? "PASS" : "FAIL") << "\n";
+  maybe_write_json(args, report);
+  return ok ? kExitOk : kExitCheckFailed;
+}
+
+}  // namespace
+
+HWINTERP_SUBCOMMAND("cosim", "lockstep co-simulation of a core (HLS vs RTL vs model)", 10,
+                    run_cosim);
+
+}  // namespace hwinterp::cli

@@ -1,0 +1,84 @@
+// `hwinterp`: the project's command line. The dispatcher is sc_main, entered
+// through SystemC's sc_elab_and_sim like libsystemc's own main(); only the
+// SystemC co-simulation mode elaborates a design.
+#include <systemc>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <iostream>
+
+#include "tb/cli/subcommand.h"
+
+namespace hwinterp::cli {
+
+std::vector<Subcommand>& subcommands() {
+  static std::vector<Subcommand> all;
+  return all;
+}
+
+bool parse_or_help(Args& args, int argc, char** argv, int first) {
+  args.parse(argc, argv, first);
+  if (!args.help_requested()) return false;
+  std::cout << args.help_text();
+  return true;
+}
+
+void maybe_write_json(const Args& args, const Json& report) {
+  if (!args.given("json")) return;
+  try {
+    write_json_file(args.str("json"), report);
+  } catch (const std::exception& e) {
+    throw UsageError(std::string("--json: ") + e.what());
+  }
+}
+
+namespace {
+
+void print_usage(std::ostream& os) {
+  auto all = subcommands();
+  std::sort(all.begin(), all.end(),
+            [](const Subcommand& a, const Subcommand& b) { return a.order < b.order; });
+  os << "usage: hwinterp <command> [options]   (hwinterp <command> --help for its options)\n\n"
+        "commands:\n";
+  for (const auto& s : all) {
+    std::string name = "  " + s.name;
+    name.resize(14, ' ');
+    os << name << s.summary << "\n";
+  }
+  os << "\nexit codes: 0 success, 1 a check failed, 2 bad input\n";
+}
+
+}  // namespace
+}  // namespace hwinterp::cli
+
+extern "C" int sc_main(int argc, char** argv) {
+  using namespace hwinterp::cli;
+  if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
+    print_usage(argc < 2 ? std::cerr : std::cout);
+    return argc < 2 ? kExitBadInput : kExitOk;
+  }
+  const std::string name = argv[1];
+  for (const auto& s : subcommands()) {
+    if (s.name != name) continue;
+    try {
+      return s.run(argc, argv, 2);
+    } catch (const UsageError& e) {
+      std::cerr << "hwinterp " << name << ": error: " << e.what() << "\n";
+      return kExitBadInput;
+    } catch (const std::exception& e) {
+      std::cerr << "hwinterp " << name << ": error: " << e.what() << "\n";
+      return kExitBadInput;
+    }
+  }
+  std::cerr << "hwinterp: unknown command '" << name << "' (see hwinterp --help)\n";
+  return kExitBadInput;
+}
+
+// Our own main() (it takes precedence over libsystemc's) so that the SystemC
+// banner, printed before sc_main runs, stays out of every report.
+int main(int argc, char** argv) {
+  setenv("SYSTEMC_DISABLE_COPYRIGHT_MESSAGE", "1", 0);
+  return sc_core::sc_elab_and_sim(argc, argv);
+}

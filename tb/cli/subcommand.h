@@ -1,0 +1,48 @@
+// The `hwinterp` subcommands. Each lives in its own tb/cmd_<name>.cpp and
+// registers itself with a static HWINTERP_SUBCOMMAND(...) object, so adding a
+// subcommand touches no shared table. Those files are compiled straight into
+// the executable (not a static library), which keeps the registrations alive.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "tb/cli/cli_args.h"
+#include "tb/report/json.h"
+
+namespace hwinterp::cli {
+
+// Exit codes of the command-line contract.
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitCheckFailed = 1;  // mismatch, bound exceeded, timing violation
+inline constexpr int kExitBadInput = 2;     // with a one-line message naming the value
+
+struct Subcommand {
+  std::string name;
+  std::string summary;
+  int order;  // position in `hwinterp --help`
+  // Runs with argv[first] the first option after the subcommand name. Returns
+  // the exit code; throws UsageError for bad input.
+  std::function<int(int argc, char** argv, int first)> run;
+};
+
+std::vector<Subcommand>& subcommands();
+
+struct SubcommandRegistration {
+  SubcommandRegistration(Subcommand s) { subcommands().push_back(std::move(s)); }
+};
+
+// Parses argv into `args`; returns true when --help was asked (help printed).
+bool parse_or_help(Args& args, int argc, char** argv, int first);
+
+// Writes the --json report when asked. Throws UsageError when the file can't be written.
+void maybe_write_json(const Args& args, const Json& report);
+
+}  // namespace hwinterp::cli
+
+#define HWINTERP_CONCAT_INNER(a, b) a##b
+#define HWINTERP_CONCAT(a, b) HWINTERP_CONCAT_INNER(a, b)
+#define HWINTERP_SUBCOMMAND(...)                                        \
+  static const ::hwinterp::cli::SubcommandRegistration HWINTERP_CONCAT( \
+      hwinterp_subcommand_, __LINE__)(::hwinterp::cli::Subcommand{__VA_ARGS__})

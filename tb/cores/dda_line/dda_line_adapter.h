@@ -1,0 +1,138 @@
+// dda_line's adapter to the shared lockstep harness: the command payload and
+// its pins, the reference model, the stimulus, the error bound and the
+// command-line options. Everything else (runners, scoreboard, monitors,
+// reports, traces) is the harness's, for every core.
+//
+// Command: one signed delta per axis (cmd_delta_i). Setup: half_preload_i,
+// sampled with each command (job directive `preload half|zero`, random
+// streams change it while the core runs, `--half-preload` on the command line).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "hls/dda_line.h"
+#include "models/dda_line_model.h"
+#include "tb/cli/cli_args.h"
+#include "tb/lockstep/pins.h"
+#include "tb/lockstep/rtl_pins.h"
+#include "tb/scoreboard/move.h"
+#include "tb/stimulus/case.h"
+#include "tb/stimulus/rng.h"
+
+namespace hwinterp::tb {
+template <class A>
+class JobLine;
+}
+
+namespace hwinterp::tb::cores::dda_line {
+
+struct Adapter {
+  static constexpr const char* kName = "dda_line";
+  static constexpr const char* kSummary = "N-axis DDA line interpolator (004 paper's DDA)";
+  template <class Cfg>
+  using Hls = hls::DdaLine<Cfg>;
+
+  struct Command {
+    std::array<int64_t, kMaxAxes> delta{};  // signed steps per axis
+  };
+  struct Setup {
+    bool half_preload = false;
+  };
+
+  // --- pins -----------------------------------------------------------------
+  static std::vector<PortSpec> own_ports(const CoreLimits& l) {
+    return {{"cmd_delta_i", l.axes, l.param("ACC_W")}, {"half_preload_i", 1, 1}};
+  }
+  static size_t own_values(const Command& c, const Setup& s, const CoreLimits& l, uint64_t* out) {
+    for (int i = 0; i < l.axes; ++i)
+      out[i] = static_cast<uint64_t>(c.delta[static_cast<size_t>(i)]);
+    out[l.axes] = s.half_preload;
+    return static_cast<size_t>(l.axes) + 1;
+  }
+  // Direct mode: the Verilated --cc model's and the HLS core's own inputs.
+  template <class Cfg, class Rtl, class Own>
+  static void drive(const Command& c, const Setup& s, Rtl& rtl, Own& own) {
+    for (int i = 0; i < Cfg::AXES; ++i) {
+      const uint64_t d = static_cast<uint64_t>(c.delta[static_cast<size_t>(i)]);
+      put_bits(rtl.cmd_delta_i, i * Cfg::ACC_W, Cfg::ACC_W, d);
+      own.delta[i] = d;
+    }
+    rtl.half_preload_i = s.half_preload;
+    own.half_preload = s.half_preload;
+  }
+  // SystemC mode: the own input signals, bound to both DUTs.
+  template <class Cfg>
+  struct ScPins {
+    sc_core::sc_signal<hls::pin_t<Cfg::AXES * Cfg::ACC_W>> delta{"cmd_delta"};
+    sc_core::sc_signal<bool> half{"half_preload"};
+    hls::pin_t<Cfg::AXES* Cfg::ACC_W> value = 0;  // kept: building a wide pin value allocates
+    template <class Dut>
+    void bind(Dut& d) {
+      d.cmd_delta_i(delta);
+      d.half_preload_i(half);
+    }
+    void write(const Command& c, const Setup& s) {
+      for (int i = 0; i < Cfg::AXES; ++i)
+        hls::set_pin_field<Cfg::AXES * Cfg::ACC_W>(
+            value, i * Cfg::ACC_W, Cfg::ACC_W,
+            static_cast<uint64_t>(c.delta[static_cast<size_t>(i)]));
+      delta.write(value);
+      half.write(s.half_preload);
+    }
+  };
+
+  // --- reference model (models/dda_line_model.h) ------------------------------
+  class Reference {
+   public:
+    Reference(const models::LatticePoint& start, const Command& c, const Setup& s,
+              const CoreLimits& l);
+    bool next(Move& m);
+    double error(const models::LatticePoint& p) const;
+    models::ErrorBound bound() const { return bound_; }
+
+   private:
+    models::DdaMoveStream stream_;
+    models::DdaMove move_;
+    models::LatticePoint start_, end_;
+    models::ErrorBound bound_;
+  };
+  static void apply(const Command& c, models::LatticePoint& at) {
+    for (size_t i = 0; i < at.size(); ++i) at[i] += c.delta[i];
+  }
+  static uint64_t work(const Command& c);  // 2^n iterations
+
+  // --- stimulus ---------------------------------------------------------------
+  static void validate(const Command& c, const models::LatticePoint& at, const CoreLimits& l,
+                       const std::string& where);
+  static Setup random_setup(Rng& rng) { return {rng.chance(1, 2)}; }
+  static Command random_command(Rng& rng, const CoreLimits& l, const models::LatticePoint& at,
+                                const Command& previous);
+  // `line X Y ...` (to an absolute point), `move DX DY ...`, `preload half|zero`.
+  static bool job_directive(JobLine<Adapter>& line);
+  // A line from `start` to `end` (leading axes; the rest are 0).
+  static Case<Adapter> line_case(const CoreLimits& l, const std::string& name,
+                                 const std::vector<int64_t>& start, const std::vector<int64_t>& end,
+                                 const RunSettings<Adapter>& settings);
+  // The eight test lines of 004_dc68f1177cad466f.txt, one case each.
+  static std::vector<Case<Adapter>> paper_lines(const CoreLimits& l,
+                                                const RunSettings<Adapter>& settings);
+  // The main regression: the paper lines with plain and half preload, a
+  // seeded random stream, and (`commands` > 0) a random stream with aborts
+  // and feed holds.
+  static std::vector<Case<Adapter>> regression_cases(const CoreLimits& l, uint64_t commands,
+                                                     uint64_t seed);
+
+  // --- command line (hwinterp cosim --core dda_line) -------------------------
+  static void declare_options(cli::Args& args);
+  static std::vector<std::string> sources() { return {"line", "paper-lines"}; }
+  static void setup_from_options(const cli::Args& args, Setup& s) {
+    s.half_preload = args.given("half-preload");
+  }
+  static std::vector<Case<Adapter>> cases_from_options(const cli::Args& args, const CoreLimits& l,
+                                                       const RunSettings<Adapter>& settings);
+};
+
+}  // namespace hwinterp::tb::cores::dda_line

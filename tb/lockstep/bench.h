@@ -1,0 +1,404 @@
+// The lockstep testbench of any core, independent of how the two DUTs are
+// clocked: it drives the stimulus one clock edge at a time, compares the HLS
+// core and the RTL after every edge, runs the step/dir timing monitors and
+// the scoreboard on the outputs, follows aborts, and collects one CaseResult
+// per case. The direct runner (a C++ loop, tb/lockstep/direct.h) and the
+// SystemC runner (a negedge process, tb/lockstep/systemc.h) both call it, so
+// the two modes see the same stimulus and the same checks. It knows nothing
+// of a core's insides: A, the core's adapter, supplies the payload, the
+// reference model and the stimulus (tb/cores/<core>/<core>_adapter.h).
+//
+// Protocol per clock edge: in = next_frame(); both DUTs take `in` at the edge;
+// observe(hls_outputs, rtl_outputs). Repeat while !finished().
+#pragma once
+
+#include <algorithm>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "tb/lockstep/bench_options.h"
+#include "tb/lockstep/pins.h"
+#include "tb/monitor/stepdir_monitor.h"
+#include "tb/report/cosim_result.h"
+#include "tb/report/frames.h"
+#include "tb/report/trace.h"
+#include "tb/scoreboard/scoreboard.h"
+#include "tb/stimulus/stimulus.h"
+
+namespace hwinterp::tb {
+
+// The input ports in frame order: the shared contract around the core's own.
+template <class A>
+std::vector<PortSpec> input_ports(const CoreLimits& l) {
+  std::vector<PortSpec> p = {{"rst_ni", 1, 1}, {"cmd_valid_i", 1, 1}};
+  for (auto& own : A::own_ports(l)) p.push_back(std::move(own));
+  p.push_back({"feed_i", 1, l.feed_w + 1});
+  for (const char* t : {"step_len_i", "step_space_i", "dir_setup_i", "dir_hold_i"})
+    p.push_back({t, 1, l.tim_w});
+  p.push_back({"abort_i", 1, 1});
+  return p;
+}
+
+// One value per input element of `f`, in input_ports() order.
+template <class A>
+void flat_inputs(const Frame<A>& f, const CoreLimits& l, uint64_t* out) {
+  size_t k = 0;
+  out[k++] = f.rst_n;
+  out[k++] = f.cmd_valid;
+  k += A::own_values(f.cmd, f.setup, l, out + k);
+  out[k++] = f.feed;
+  out[k++] = f.timing.step_len;
+  out[k++] = f.timing.step_space;
+  out[k++] = f.timing.dir_setup;
+  out[k++] = f.timing.dir_hold;
+  out[k++] = f.abort;
+}
+
+inline double bench_now() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+template <class A>
+class Bench {
+ public:
+  using Kind = typename Item<A>::Kind;
+
+  // Opens every output file (throws std::runtime_error naming it): a bad
+  // path costs no simulation.
+  Bench(CoreLimits limits, std::vector<Case<A>> cases, BenchOptions options)
+      : limits_(std::move(limits)), cases_(std::move(cases)), options_(std::move(options)) {
+    if (!options_.trace_path.empty() || !options_.frames_path.empty()) {
+      const std::vector<PortSpec> ports = input_ports<A>(limits_);
+      if (!options_.trace_path.empty())
+        trace_ = std::make_unique<Trace>(options_.trace_path, ports, limits_.axes, limits_.pos_w,
+                                         options_.trace_window);
+      if (!options_.frames_path.empty())
+        frames_ = std::make_unique<FrameWriter>(options_.frames_path, limits_, ports);
+    }
+    if (!options_.path_csv.empty()) {
+      path_csv_ = std::make_unique<std::ofstream>(options_.path_csv);
+      if (!*path_csv_)
+        throw std::runtime_error("cannot write path CSV '" + options_.path_csv + "'");
+      *path_csv_ << "case,cycle,kind";
+      for (int i = 0; i < limits_.axes; ++i) *path_csv_ << ",p" << i;
+      *path_csv_ << "\n";
+    }
+    if (cases_.empty())
+      finished_ = true;
+    else
+      start_case();
+  }
+
+  const Frame<A>& next_frame() {
+    frame_.cmd_valid = false;
+    frame_.cmd = typename A::Command{};
+    frame_.abort = false;
+    frame_.rst_n = phase_ != Phase::kReset;
+    if (case_clock_start_ == 0) case_clock_start_ = bench_now();
+    if (phase_ == Phase::kRun) {
+      if (options_.abort_at && *options_.abort_at == cycle_ + 1)
+        frame_.abort = true;  // the item being offered waits a clock
+      else
+        drive_items();
+    }
+    frame_.feed = settings_.feed;
+    frame_.setup = settings_.setup;
+    frame_.timing = settings_.timing;
+    return frame_;
+  }
+
+  void observe(const OutPins& hls, const OutPins& rtl) {
+    ++cycle_;
+    if (options_.progress_every && cycle_ % options_.progress_every == 0) print_progress();
+    const FaultPlan& f = options_.faults;
+    OutPins hls_seen = hls;
+    if (f.flip_hls_step_at == cycle_) hls_seen.step ^= 1;
+    if (trace_ || frames_) {
+      flat_inputs<A>(frame_, limits_, in_values_);
+      if (trace_) trace_->record(cycle_, in_values_, hls_seen, rtl);
+      if (frames_) frames_->write(in_values_);
+    }
+
+    CaseResult& r = results_.back();
+    r.cycles = cycle_ - case_start_cycle_;
+    if (!compare(hls_seen, rtl)) {
+      // The first mismatch ends the run: nothing after it can be trusted.
+      r.end_position = scoreboard_->position();
+      r.expected_end_position = scoreboard_->expected_end();
+      r.seconds = bench_now() - case_clock_start_;
+      finished_ = true;
+      return;
+    }
+    last_rtl_ = rtl;
+    OutPins seen = rtl;
+    if (f.glitch_step_at == cycle_) seen.step ^= 1;
+
+    if (frame_.rst_n) {
+      for (int i = 0; i < limits_.axes; ++i)
+        monitors_[static_cast<size_t>(i)].observe(cycle_, (seen.step >> i) & 1, (seen.dir >> i) & 1,
+                                                  frame_.timing, r.timing_violations,
+                                                  r.timing_violation_count);
+      const bool moved = scoreboard_->observe(cycle_, seen, r);
+      if (moved) {
+        if (path_csv_) path_row("move", scoreboard_->position());
+        if (options_.record_path) r.visited.push_back(scoreboard_->position());
+      }
+      if (frame_.abort) abort_edge(moved, r);
+      follow_abort(seen, r);
+    }
+
+    switch (phase_) {
+      case Phase::kReset:
+        if (--phase_left_ == 0) phase_ = Phase::kRun;
+        break;
+      case Phase::kRun:
+        // Idle after the last item: the last command taken shows busy_o on the
+        // edge that took it, so !busy here means everything has run.
+        if (item_ == cases_[case_index_].items.size() && !frame_.cmd_valid && !rtl.busy) {
+          phase_ = Phase::kTail;
+          phase_left_ = kTailCycles;
+        }
+        break;
+      case Phase::kTail:
+        if (--phase_left_ == 0) {
+          end_case();
+          return;
+        }
+        break;
+    }
+    if (r.cycles > budget_) {
+      r.timed_out = true;
+      end_case();
+    }
+  }
+
+  bool finished() const { return finished_; }
+  // Results of the cases that ran (a mismatch stops the run).
+  const std::vector<CaseResult>& results() const { return results_; }
+  uint64_t cycles() const { return cycle_; }
+  const CoreLimits& limits() const { return limits_; }
+  size_t case_count() const { return cases_.size(); }
+  // Closes the trace (FST conversion), the frame file and the path CSV;
+  // throws std::runtime_error on failure.
+  void close() {
+    if (trace_) trace_->close();
+    if (frames_) frames_->close();
+    if (path_csv_) {
+      path_csv_->close();
+      if (!*path_csv_)
+        throw std::runtime_error("error writing path CSV '" + options_.path_csv + "'");
+    }
+  }
+
+ private:
+  enum class Phase { kReset, kRun, kTail };
+  static constexpr uint64_t kResetCycles = 2;
+  static constexpr uint64_t kTailCycles = 2;  // after the core goes idle, so traces show the end
+
+  void start_case() {
+    const Case<A>& c = cases_[case_index_];
+    CaseResult r;
+    r.core = limits_.core;
+    r.variant = limits_.variant;
+    r.name = c.name;
+    r.mode = options_.mode;
+    r.seed = options_.seed;
+    r.commands_offered = command_count(c);
+    r.steps.assign(static_cast<size_t>(limits_.axes), 0);
+    r.start = c.start;
+    if (options_.record_path) r.visited.push_back(c.start);
+    results_.push_back(std::move(r));
+
+    phase_ = Phase::kReset;
+    phase_left_ = kResetCycles;
+    case_start_cycle_ = cycle_;
+    budget_ = cycle_budget(c, limits_);
+    item_ = 0;
+    gap_left_ = 0;
+    settings_ = c.settings;
+    last_rtl_ = OutPins{};
+    abort_open_ = false;
+    monitors_.clear();
+    for (int i = 0; i < limits_.axes; ++i) monitors_.emplace_back(i);
+    scoreboard_.emplace(limits_, c.start, case_start_cycle_);
+    case_clock_start_ = 0;  // set by the case's first frame
+    path_target_ = c.start;
+    path_row("start", c.start);
+  }
+
+  void end_case() {
+    CaseResult& r = results_.back();
+    scoreboard_->finish(r);
+    if (abort_open_)
+      record_capped(r.scoreboard_errors, r.scoreboard_error_count,
+                    std::string("abort at cycle ") + std::to_string(r.aborts.back().cycle) +
+                        ": busy_o never fell");
+    r.completed = true;
+    r.seconds = bench_now() - case_clock_start_;
+    if (++case_index_ < cases_.size())
+      start_case();
+    else
+      finished_ = true;
+  }
+
+  // Walks the case's items for the next edge: settings apply at once, a gap or
+  // a drain holds cmd_valid_i low, an abort raises abort_i for one edge, a
+  // command is offered until the core takes it (cmd_ready_o, a register, seen
+  // after the previous edge, tells whether it will).
+  void drive_items() {
+    const auto& items = cases_[case_index_].items;
+    while (item_ < items.size()) {
+      const Item<A>& it = items[item_];
+      switch (it.kind) {
+        case Kind::kSettings:
+          settings_ = it.settings;
+          ++item_;
+          continue;
+        case Kind::kGap:
+          if (gap_left_ == 0) gap_left_ = it.cycles;
+          if (--gap_left_ == 0) ++item_;
+          return;
+        case Kind::kDrain:
+          if (last_rtl_.busy) return;
+          ++item_;
+          continue;
+        case Kind::kAbort:
+          frame_.abort = true;
+          ++item_;
+          return;
+        case Kind::kCommand:
+          frame_.cmd_valid = true;
+          frame_.cmd = it.cmd;
+          if (last_rtl_.cmd_ready) {
+            // busy_o is the new command's from here: an abort still open
+            // stays unmeasured (idle_after_clocks -1).
+            abort_open_ = false;
+            scoreboard_->command_taken(it.cmd, settings_.setup);
+            ++results_.back().commands;
+            ++item_;
+            A::apply(it.cmd, path_target_);
+            path_row("target", path_target_);
+          }
+          return;
+      }
+    }
+  }
+
+  // The abort edge: nothing may start on it; the position must be on the
+  // reference path; then busy_o must fall within the core's bound.
+  void abort_edge(bool moved, CaseResult& r) {
+    const uint64_t case_cycle = cycle_ - case_start_cycle_;
+    if (moved)
+      record_capped(r.scoreboard_errors, r.scoreboard_error_count,
+                    "cycle " + std::to_string(cycle_) + ": a step started on the abort edge");
+    AbortRecord a;
+    a.cycle = case_cycle;
+    a.position = scoreboard_->position();
+    a.on_reference_path = scoreboard_->abort();
+    a.idle_bound = std::max<uint32_t>(frame_.timing.step_len, 1) - 1;
+    if (!a.on_reference_path)
+      record_capped(r.scoreboard_errors, r.scoreboard_error_count,
+                    "abort at cycle " + std::to_string(cycle_) + ": position " +
+                        point_text(a.position) + " is not on the reference path");
+    r.aborts.push_back(std::move(a));
+    abort_open_ = true;
+    abort_cycle_ = cycle_;
+  }
+
+  void follow_abort(const OutPins& seen, CaseResult& r) {
+    if (!abort_open_) return;
+    AbortRecord& a = r.aborts.back();
+    // A pulse in flight follows the length setting of every clock it is high.
+    a.idle_bound =
+        std::max<uint64_t>(a.idle_bound, std::max<uint32_t>(frame_.timing.step_len, 1) - 1);
+    if (seen.busy) return;
+    abort_open_ = false;
+    a.idle_after_clocks = static_cast<int64_t>(cycle_ - abort_cycle_);
+    if (static_cast<uint64_t>(a.idle_after_clocks) > a.idle_bound)
+      record_capped(r.scoreboard_errors, r.scoreboard_error_count,
+                    "abort at cycle " + std::to_string(abort_cycle_) + ": busy_o fell " +
+                        std::to_string(a.idle_after_clocks) + " clocks later, bound " +
+                        std::to_string(a.idle_bound));
+  }
+
+  bool compare(const OutPins& hls, const OutPins& rtl) {
+    if (hls == rtl) return true;
+    // Name the first differing signal, in port order.
+    Mismatch m{cycle_, "", 0, 0};
+    auto differs = [&](const std::string& name, uint64_t h, uint64_t r) {
+      if (h == r || !m.signal.empty()) return;
+      m.signal = name;
+      m.hls = h;
+      m.rtl = r;
+    };
+    differs("cmd_ready_o", hls.cmd_ready, rtl.cmd_ready);
+    for (int i = 0; i < limits_.axes; ++i)
+      differs("step_o[" + std::to_string(i) + "]", (hls.step >> i) & 1, (rtl.step >> i) & 1);
+    for (int i = 0; i < limits_.axes; ++i)
+      differs("dir_o[" + std::to_string(i) + "]", (hls.dir >> i) & 1, (rtl.dir >> i) & 1);
+    for (int i = 0; i < limits_.axes; ++i)
+      differs("pos_o[" + std::to_string(i) + "]", hls.pos[static_cast<size_t>(i)],
+              rtl.pos[static_cast<size_t>(i)]);
+    differs("busy_o", hls.busy, rtl.busy);
+    differs("done_o", hls.done, rtl.done);
+    CaseResult& r = results_.back();
+    r.mismatches = 1;
+    r.first_mismatch = m;
+    return false;
+  }
+
+  void print_progress() const {
+    const CaseResult& r = results_.back();
+    std::fprintf(stderr, "  [%s %s] cycle %llu: case %zu/%zu '%s', command %llu/%llu\n",
+                 limits_.variant.c_str(), options_.mode.c_str(),
+                 static_cast<unsigned long long>(cycle_), case_index_ + 1, cases_.size(),
+                 r.name.c_str(), static_cast<unsigned long long>(r.commands),
+                 static_cast<unsigned long long>(r.commands_offered));
+  }
+
+  void path_row(const char* kind, const models::LatticePoint& p) {
+    if (!path_csv_) return;
+    *path_csv_ << cases_[case_index_].name << ',' << cycle_ - case_start_cycle_ << ',' << kind;
+    for (const int64_t v : p) *path_csv_ << ',' << v;
+    *path_csv_ << '\n';
+  }
+
+  CoreLimits limits_;
+  std::vector<Case<A>> cases_;
+  BenchOptions options_;
+  std::vector<CaseResult> results_;
+  std::unique_ptr<Trace> trace_;
+  std::unique_ptr<FrameWriter> frames_;
+  std::unique_ptr<std::ofstream> path_csv_;
+  models::LatticePoint path_target_;  // where the commands taken so far lead
+  uint64_t in_values_[Trace::kMaxInputs] = {};
+
+  uint64_t cycle_ = 0;  // clock edges so far in the run
+  bool finished_ = false;
+
+  // Current case.
+  size_t case_index_ = 0;
+  Phase phase_ = Phase::kReset;
+  uint64_t phase_left_ = 0;  // reset / tail edges still to drive
+  uint64_t case_start_cycle_ = 0;
+  uint64_t budget_ = 0;
+  size_t item_ = 0;
+  uint64_t gap_left_ = 0;
+  RunSettings<A> settings_;
+  Frame<A> frame_;
+  OutPins last_rtl_;  // outputs after the last edge: what the driver reacts to
+  std::vector<StepdirMonitor> monitors_;
+  std::optional<Scoreboard<A>> scoreboard_;
+  bool abort_open_ = false;  // an abort whose busy_o has not fallen yet
+  uint64_t abort_cycle_ = 0;
+  double case_clock_start_ = 0;
+};
+
+}  // namespace hwinterp::tb

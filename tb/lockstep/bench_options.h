@@ -1,0 +1,41 @@
+// How a lockstep run is set up, for every core: the test hooks that prove
+// the checks can fail, traces, frame dumps, path export, progress, abort.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace hwinterp::tb {
+
+// Test hooks that prove the checks can fail. Cycles count clock edges from
+// the start of the run (1-based).
+struct FaultPlan {
+  // Invert step_o[0] of the HLS outputs before the lockstep comparison.
+  std::optional<uint64_t> flip_hls_step_at;
+  // Invert step_o[0] of the RTL outputs after the comparison, as the
+  // monitors and the scoreboard see them (a glitch on the pin).
+  std::optional<uint64_t> glitch_step_at;
+};
+
+struct BenchOptions {
+  std::string mode;  // "direct" or "systemc": reported only
+  uint64_t seed = 0;
+  FaultPlan faults;
+  std::string trace_path;     // VCD or .fst; empty: no trace
+  uint64_t trace_window = 0;  // 0: whole run
+  // Progress line on stderr every this many clock edges (0: none).
+  uint64_t progress_every = 0;
+  // Input frames for replay in other simulators (tb/report/frames.h); empty: none.
+  std::string frames_path;
+  // The lattice path as CSV (case,cycle,kind,axis values...): kind `start`
+  // (case start), `target` (end point of a command taken), `move` (position
+  // after the core stepped); scripts/plot_paths.py draws it. Empty: none.
+  std::string path_csv;
+  // Keep every visited lattice point in CaseResult::visited.
+  bool record_path = false;
+  // Raise abort_i (with cmd_valid_i low) on this clock edge of the run.
+  std::optional<uint64_t> abort_at;
+};
+
+}  // namespace hwinterp::tb

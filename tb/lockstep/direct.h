@@ -1,0 +1,93 @@
+// Direct lockstep mode, for any core: the HLS core's tick() and the
+// `verilator --cc` model of its RTL stepped together in a plain C++ loop, one
+// clock edge per iteration: the fast mode for long regressions. The shared
+// pins are driven and read here; the core's adapter drives its own
+// (A::drive), with plain stores: no virtual call per pin per clock.
+#pragma once
+
+#include <verilated.h>
+
+#include "hwinterp_variants.h"
+#include "tb/lockstep/bench.h"
+#include "tb/lockstep/rtl_pins.h"
+
+namespace hwinterp::tb {
+
+// The shared outputs of an HLS core as plain integers.
+template <int AXES, int POS_W>
+OutPins read_outputs(const hls::StepperOutputs<AXES, POS_W>& o) {
+  OutPins p;
+  p.cmd_ready = o.cmd_ready;
+  p.step = static_cast<uint32_t>(o.step.to_uint());
+  p.dir = static_cast<uint32_t>(o.dir.to_uint());
+  for (int i = 0; i < AXES; ++i) p.pos[static_cast<size_t>(i)] = o.pos[i].to_uint64();
+  p.busy = o.busy;
+  p.done = o.done;
+  return p;
+}
+
+// The shared outputs of a `verilator --cc` model.
+template <class Cfg, class Rtl>
+OutPins read_outputs(const Rtl& rtl) {
+  OutPins p;
+  p.cmd_ready = rtl.cmd_ready_o;
+  p.step = rtl.step_o;
+  p.dir = rtl.dir_o;
+  for (int i = 0; i < Cfg::AXES; ++i)
+    p.pos[static_cast<size_t>(i)] = get_bits(rtl.pos_o, i * Cfg::POS_W, Cfg::POS_W);
+  p.busy = rtl.busy_o;
+  p.done = rtl.done_o;
+  return p;
+}
+
+// Runs `bench` to its end in the direct mode.
+template <class A, class Cfg>
+void run_direct(Bench<A>& bench) {
+  using Core = typename A::template Hls<Cfg>;
+  using Rtl = typename RtlOf<Cfg>::Cc;
+  // A model makes its context the thread's current one; hand the thread back
+  // to the default context when this one dies, or a later model without an
+  // explicit context (the SystemC ones) would pick up a dangling pointer
+  // (Verilator then deadlocks in its own fatal-error path).
+  struct RestoreThreadContext {
+    ~RestoreThreadContext() { Verilated::threadContextp(Verilated::defaultContextp()); }
+  } restore;
+  VerilatedContext context;
+  Rtl rtl(&context);
+  Core hls;
+  typename Core::Inputs in;
+  rtl.clk_i = 0;
+  rtl.rst_ni = 0;
+  rtl.eval();
+  while (!bench.finished()) {
+    const Frame<A>& f = bench.next_frame();
+    rtl.rst_ni = f.rst_n;
+    rtl.cmd_valid_i = f.cmd_valid;
+    rtl.feed_i = static_cast<uint32_t>(f.feed);
+    rtl.step_len_i = f.timing.step_len;
+    rtl.step_space_i = f.timing.step_space;
+    rtl.dir_setup_i = f.timing.dir_setup;
+    rtl.dir_hold_i = f.timing.dir_hold;
+    rtl.abort_i = f.abort;
+    in.rst_n = f.rst_n;
+    in.cmd_valid = f.cmd_valid;
+    in.feed = f.feed;
+    in.timing.step_len = f.timing.step_len;
+    in.timing.step_space = f.timing.step_space;
+    in.timing.dir_setup = f.timing.dir_setup;
+    in.timing.dir_hold = f.timing.dir_hold;
+    in.abort = f.abort;
+    A::template drive<Cfg>(f.cmd, f.setup, rtl, in.cmd);
+    // Inputs and the rising edge in one eval: with rst_ni low the RTL's
+    // asynchronous reset wins, as tick() with rst_n low does.
+    rtl.clk_i = 1;
+    rtl.eval();
+    hls.tick(in);
+    bench.observe(read_outputs(hls.outputs()), read_outputs<Cfg>(rtl));
+    rtl.clk_i = 0;
+    rtl.eval();
+  }
+  rtl.final();
+}
+
+}  // namespace hwinterp::tb

@@ -1,0 +1,176 @@
+#include "tb/lockstep/registry.h"
+
+#include <random>
+
+#include "hwinterp_core_adapters.h"
+#include "hwinterp_variants.h"
+#include "tb/lockstep/direct.h"
+#include "tb/lockstep/systemc.h"
+
+namespace hwinterp::tb {
+
+namespace {
+
+template <class A, class Cfg>
+class BenchRunOf final : public BenchRun {
+ public:
+  BenchRunOf(CoreLimits limits, std::vector<Case<A>> cases, const BenchOptions& options)
+      : bench_(std::move(limits), std::move(cases), options) {}
+  const CoreLimits& limits() const override { return bench_.limits(); }
+  size_t case_count() const override { return bench_.case_count(); }
+  void run_direct() override { tb::run_direct<A, Cfg>(bench_); }
+  std::unique_ptr<sc_core::sc_module> systemc_module(ScRunControl& control) override {
+    return std::make_unique<ScBench<A, Cfg>>(sc_core::sc_gen_unique_name(Cfg::kVariant), bench_,
+                                             control);
+  }
+  bool finished() const override { return bench_.finished(); }
+  const std::vector<CaseResult>& results() const override { return bench_.results(); }
+  uint64_t cycles() const override { return bench_.cycles(); }
+  void close() override { bench_.close(); }
+
+ private:
+  Bench<A> bench_;
+};
+
+template <class A, class Cfg>
+std::unique_ptr<BenchRun> make_run(const CoreLimits& l, std::vector<Case<A>> cases,
+                                   const BenchOptions& options) {
+  for (const auto& c : cases) validate_case(c, l);
+  try {
+    return std::make_unique<BenchRunOf<A, Cfg>>(l, std::move(cases), options);
+  } catch (const std::runtime_error& e) {
+    throw cli::UsageError(e.what());  // an output file that cannot be written
+  }
+}
+
+// Settings from the shared flags and the core's own.
+template <class A>
+RunSettings<A> settings_from_args(const cli::Args& args, const CoreLimits& l) {
+  RunSettings<A> s = default_settings<A>(l);
+  if (args.given("feed")) {
+    s.feed = parse_feed(args.str("feed"), l, "--feed");
+    if (s.feed == 0) throw cli::UsageError("--feed: 0 holds the move forever; give a feed > 0");
+  }
+  const auto tmax = static_cast<int64_t>(l.tim_max());
+  if (args.given("step-len"))
+    s.timing.step_len = static_cast<uint32_t>(args.integer("step-len", 0, tmax));
+  if (args.given("step-space"))
+    s.timing.step_space = static_cast<uint32_t>(args.integer("step-space", 0, tmax));
+  if (args.given("dir-setup"))
+    s.timing.dir_setup = static_cast<uint32_t>(args.integer("dir-setup", 0, tmax));
+  if (args.given("dir-hold"))
+    s.timing.dir_hold = static_cast<uint32_t>(args.integer("dir-hold", 0, tmax));
+  A::setup_from_options(args, s.setup);
+  validate_feed_and_timing(s.feed, s.timing, l, "command line");
+  return s;
+}
+
+template <class A, class Cfg>
+VariantEntry make_variant() {
+  VariantEntry v;
+  v.limits = limits_of<Cfg>();
+  v.from_args = [l = v.limits](const cli::Args& args, const BenchOptions& options) {
+    const RunSettings<A> settings = settings_from_args<A>(args, l);
+    std::vector<Case<A>> cases;
+    if (args.given("job")) {
+      cases = parse_job<A>(args.str("job"), l, settings);
+    } else if (args.given("random")) {
+      Case<A> c = random_case<A>(l, static_cast<uint64_t>(args.integer("random", 1, 100000000)),
+                                 options.seed);
+      cases.push_back(std::move(c));
+    } else {
+      cases = A::cases_from_options(args, l, settings);
+    }
+    return make_run<A, Cfg>(l, std::move(cases), options);
+  };
+  v.regression = [l = v.limits](uint64_t commands, uint64_t seed, const BenchOptions& options) {
+    return make_run<A, Cfg>(l, A::regression_cases(l, commands, seed), options);
+  };
+  return v;
+}
+
+template <class A, class Cfg>
+void add_variant(std::vector<CoreEntry>& all) {
+  auto it =
+      std::find_if(all.begin(), all.end(), [](const CoreEntry& e) { return e.name == A::kName; });
+  if (it == all.end()) {
+    CoreEntry e;
+    e.name = A::kName;
+    e.summary = A::kSummary;
+    e.declare_options = [](cli::Args& args) { A::declare_options(args); };
+    e.sources = A::sources();
+    all.push_back(std::move(e));
+    it = all.end() - 1;
+  }
+  it->variants.push_back(make_variant<A, Cfg>());
+}
+
+std::string join(const std::vector<std::string>& v) {
+  std::string s;
+  for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
+  return s;
+}
+
+}  // namespace
+
+const std::vector<CoreEntry>& all_cores() {
+  static const std::vector<CoreEntry> all = [] {
+    std::vector<CoreEntry> v;
+#define HWINTERP_ADD_VARIANT(core, variant) add_variant<cores::core::Adapter, variant##_cfg>(v);
+    HWINTERP_VARIANTS(HWINTERP_ADD_VARIANT)
+#undef HWINTERP_ADD_VARIANT
+    return v;
+  }();
+  return all;
+}
+
+const CoreEntry& find_core(const std::string& name) {
+  for (const auto& c : all_cores())
+    if (c.name == name) return c;
+  throw cli::UsageError("--core: unknown core '" + name + "' (cores: " + core_list() + ")");
+}
+
+std::string core_list() {
+  std::vector<std::string> items;
+  for (const auto& c : all_cores()) {
+    std::vector<std::string> vs;
+    for (const auto& v : c.variants) vs.push_back(v.limits.variant);
+    items.push_back(c.name + " (" + join(vs) + ")");
+  }
+  return join(items);
+}
+
+const VariantEntry& CoreEntry::select(const cli::Args& args) const {
+  std::vector<std::string> names;
+  for (const auto& v : variants)
+    names.push_back(v.limits.variant + " (" + std::to_string(v.limits.axes) + " axes)");
+  if (args.given("variant")) {
+    for (const auto& v : variants)
+      if (v.limits.variant == args.str("variant")) return v;
+    throw cli::UsageError("--variant: " + name + " has no variant '" + args.str("variant") +
+                          "' (there are: " + join(names) + ")");
+  }
+  if (args.given("axes")) {
+    const int64_t axes = args.integer("axes", 1, kMaxAxes);
+    for (const auto& v : variants)
+      if (v.limits.axes == axes) return v;
+    throw cli::UsageError("--axes: no " + name + " variant has " + std::to_string(axes) +
+                          " axes (there are: " + join(names) + ")");
+  }
+  return variants.front();
+}
+
+void run_systemc(const std::vector<BenchRun*>& runs) {
+  ScRunControl control;
+  std::vector<std::unique_ptr<sc_core::sc_module>> modules;
+  for (BenchRun* r : runs)
+    if (!r->finished()) modules.push_back(r->systemc_module(control));
+  if (modules.empty()) return;
+  // sc_stop() is how a finished run ends, not news: keep it out of reports.
+  // (SystemC 2.3.4 reports it as an info of message type "/OSCI/SystemC".)
+  sc_core::sc_report_handler::set_actions("/OSCI/SystemC", sc_core::SC_INFO,
+                                          sc_core::SC_DO_NOTHING);
+  sc_core::sc_start();
+}
+
+}  // namespace hwinterp::tb

@@ -1,0 +1,78 @@
+// Every core and variant the testbench can run, generated from
+// cmake/cores.cmake (hwinterp_variants.h, hwinterp_core_adapters.h): the
+// command line finds them here by name. Type erasure happens once per run
+// (BenchRun), never per clock: each run is a Bench<A> clocked by the typed
+// runners of tb/lockstep/direct.h and tb/lockstep/systemc.h.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "tb/cli/cli_args.h"
+#include "tb/lockstep/bench_options.h"
+#include "tb/lockstep/core_limits.h"
+#include "tb/report/cosim_result.h"
+
+namespace sc_core {
+class sc_module;
+}
+
+namespace hwinterp::tb {
+
+class ScRunControl;
+
+// One lockstep run of one variant: its stimulus is fixed at creation.
+class BenchRun {
+ public:
+  virtual ~BenchRun() = default;
+  virtual const CoreLimits& limits() const = 0;
+  virtual size_t case_count() const = 0;
+  // Runs to the end in the direct mode.
+  virtual void run_direct() = 0;
+  // The SystemC bench module (run_systemc clocks it).
+  virtual std::unique_ptr<sc_core::sc_module> systemc_module(ScRunControl& control) = 0;
+  virtual bool finished() const = 0;
+  virtual const std::vector<CaseResult>& results() const = 0;
+  virtual uint64_t cycles() const = 0;
+  // Closes traces and dumps; throws std::runtime_error on a write error.
+  virtual void close() = 0;
+};
+
+// Runs every unfinished run to its end in one SystemC elaboration (a process
+// may elaborate once).
+void run_systemc(const std::vector<BenchRun*>& runs);
+
+struct VariantEntry {
+  CoreLimits limits;
+  // The stimulus the command line asks for: --job, --random/--seed, or the
+  // core's own sources; settings from --feed, the timing flags and the
+  // core's own. Validated; throws cli::UsageError naming the bad value.
+  std::function<std::unique_ptr<BenchRun>(const cli::Args&, const BenchOptions&)> from_args;
+  // The core's regression cases with a random stream of `commands`.
+  std::function<std::unique_ptr<BenchRun>(uint64_t commands, uint64_t seed, const BenchOptions&)>
+      regression;
+};
+
+struct CoreEntry {
+  std::string name;
+  std::string summary;
+  std::vector<VariantEntry> variants;  // cores.cmake order
+  // Declares the core's own `hwinterp cosim` options.
+  std::function<void(cli::Args&)> declare_options;
+  std::vector<std::string> sources;  // its own stimulus options (e.g. line, arc)
+
+  // --variant NAME, else the first variant with --axes N axes, else the
+  // first variant. Throws cli::UsageError listing the variants.
+  const VariantEntry& select(const cli::Args& args) const;
+};
+
+const std::vector<CoreEntry>& all_cores();
+// Throws cli::UsageError naming `name` and listing the cores.
+const CoreEntry& find_core(const std::string& name);
+// "dda_line (dda_line_n2, dda_line_n4), ppc_line (...)": for help texts.
+std::string core_list();
+
+}  // namespace hwinterp::tb

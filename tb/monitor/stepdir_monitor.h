@@ -1,0 +1,41 @@
+// Step/dir timing monitor for one axis: checks the waveform a core drives
+// against the hostmot2 timing set it was given. Independent of any core's
+// implementation: it only sees step_o, dir_o and the settings.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "tb/report/cosim_result.h"
+
+namespace hwinterp::tb {
+
+// Settings in clock cycles; 0 acts as 1 (rtl/stepdir_axis.sv).
+struct StepdirTiming {
+  uint32_t step_len = 1, step_space = 1, dir_setup = 1, dir_hold = 1;
+};
+
+class StepdirMonitor {
+ public:
+  explicit StepdirMonitor(int axis) : axis_(axis) {}
+
+  // The axis outputs after clock edge `cycle`, and the settings sampled at that
+  // edge (a core decides an edge with the settings it sampled then).
+  void observe(uint64_t cycle, bool step, bool dir, const StepdirTiming& timing,
+               std::vector<TimingViolation>& kept, uint64_t& count);
+
+  // Back to the post-reset state (step low and dir settled for a long time).
+  void reset();
+
+ private:
+  void check(uint64_t cycle, const char* rule, uint64_t measured, uint32_t setting,
+             std::vector<TimingViolation>& kept, uint64_t& count) const;
+
+  int axis_;
+  bool step_ = false, dir_ = false;
+  // Cycle of the last edge; unset after reset (nothing to measure against).
+  bool have_rise_ = false, have_fall_ = false, have_dir_change_ = false;
+  uint64_t rise_ = 0, fall_ = 0, dir_change_ = 0;
+};
+
+}  // namespace hwinterp::tb

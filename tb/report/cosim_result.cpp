@@ -1,0 +1,56 @@
+#include "tb/report/cosim_result.h"
+
+namespace hwinterp::tb {
+
+Json to_json(const Mismatch& m) {
+  return {{"cycle", m.cycle}, {"signal", m.signal}, {"hls", m.hls}, {"rtl", m.rtl}};
+}
+
+Json to_json(const AbortRecord& a) {
+  return {{"cycle", a.cycle},
+          {"position", a.position},
+          {"idle_after_clocks", a.idle_after_clocks >= 0 ? Json(a.idle_after_clocks) : Json()},
+          {"idle_bound_clocks", a.idle_bound},
+          {"on_reference_path", a.on_reference_path}};
+}
+
+Json CaseResult::to_json() const {
+  Json j;
+  j["core"] = core;
+  j["variant"] = variant;
+  j["case"] = name;
+  j["mode"] = mode;
+  j["seed"] = seed;
+  j["passed"] = passed();
+  j["cycles"] = cycles;
+  j["commands"] = commands;
+  j["first_step_cycle"] = first_step_cycle;
+  j["steps"] = steps;
+  j["start_position"] = start;
+  j["end_position"] = end_position;
+  j["expected_end_position"] = expected_end_position;
+  j["max_path_error_steps"] = max_path_error_steps;
+  j["path_error_bound"] = {{"value", error_bound}, {"strict", error_bound_strict}};
+  j["mismatches"] = mismatches;
+  j["first_mismatch"] = first_mismatch ? tb::to_json(*first_mismatch) : Json();
+  j["timing_violations"] = timing_violation_count;
+  Json tv = Json::array();
+  for (const auto& v : timing_violations)
+    tv.push_back({{"cycle", v.cycle},
+                  {"axis", v.axis},
+                  {"rule", v.rule},
+                  {"measured", v.measured},
+                  {"required", v.required}});
+  j["timing_violation_list"] = std::move(tv);
+  j["scoreboard_errors"] = scoreboard_error_count;
+  j["scoreboard_error_list"] = scoreboard_errors;
+  Json ab = Json::array();
+  for (const auto& a : aborts) ab.push_back(tb::to_json(a));
+  j["aborts"] = std::move(ab);
+  j["timed_out"] = timed_out;
+  j["completed"] = completed;
+  j["seconds"] = seconds;
+  return j;
+}
+
+}  // namespace hwinterp::tb

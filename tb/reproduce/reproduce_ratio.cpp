@@ -1,0 +1,216 @@
+// hwinterp reproduce --paper ratio: paper 004's eight test lines through every
+// fine line interpolator (fixed ratio, PPC, DDA plain/half, minimum deviation,
+// Bresenham), the error bounds over all short lines, PPC's 60 operations, and
+// the fixed-ratio generator built from integer clock dividers.
+#include <algorithm>
+#include <cstdlib>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "models/fixed_ratio.h"
+#include "models/min_deviation.h"
+#include "models/paper_data_001_003_004.h"
+#include "models/ppc.h"
+#include "tb/reproduce/figure_rows.h"
+#include "tb/reproduce/reproduce.h"
+
+namespace hwinterp::cli {
+namespace {
+
+namespace pd = models::paper;
+using models::LatticePoint;
+using models::StepPath;
+
+struct Method {
+  std::string name;
+  std::function<StepPath(const LatticePoint&, const LatticePoint&)> run;
+  std::function<double(const LatticePoint&, const LatticePoint&)> bound;
+  bool strict;             // error < bound (else <=)
+  std::string ticks_rule;  // ACCEPTANCE's completion ticks
+  std::function<double(int64_t, int64_t)> ticks;
+  std::string accepted;  // ACCEPTANCE's bound over |dx|, |dy| <= 40
+  double accepted_value;
+};
+
+int64_t mag(int64_t v) { return v < 0 ? -v : v; }
+
+std::vector<Method> methods() {
+  using namespace models;
+  auto maxd = [](int64_t dx, int64_t dy) { return double(std::max(mag(dx), mag(dy))); };
+  auto dda_ticks = [](int64_t dx, int64_t dy) { return double(dda_iterations({dx, dy})); };
+  return {
+      {"fixed ratio", fixed_ratio_line, fixed_ratio_error_bound, false, "max(|dx|,|dy|)", maxd,
+       "<= (|dx|+|dy|)/(2L) <= 0.707", std::sqrt(0.5)},
+      {"PPC", [](auto& a, auto& b) { return ppc_line(a, b); }, ppc_line_error_bound, false,
+       "|dx|+|dy|", [](int64_t dx, int64_t dy) { return double(mag(dx) + mag(dy)); }, "< 1", 1.0},
+      {"DDA plain", [](auto& a, auto& b) { return dda_step_path(a, b, Preload::kZero); },
+       [](auto&, auto&) { return dda_error_bound(2, Preload::kZero).value; }, true, "2^n",
+       dda_ticks, "< 1", 1.0},
+      {"DDA half", [](auto& a, auto& b) { return dda_step_path(a, b, Preload::kHalf); },
+       [](auto&, auto&) { return dda_error_bound(2, Preload::kHalf).value; }, false, "2^n",
+       dda_ticks, "about 0.70", std::sqrt(0.5)},
+      {"min deviation", min_deviation_line, min_deviation_error_bound, false, "max(|dx|,|dy|)",
+       maxd, "<= 0.5", 0.5},
+      {"Bresenham", bresenham_line, min_deviation_error_bound, false, "max(|dx|,|dy|)", maxd,
+       "<= 0.5", 0.5},
+  };
+}
+
+struct Check {
+  bool pulses, end, bound, ticks;
+  double error;
+  bool all() const { return pulses && end && bound && ticks; }
+};
+
+Check check(const Method& m, const LatticePoint& a, const LatticePoint& b) {
+  const StepPath p = m.run(a, b);
+  const int64_t dx = b[0] - a[0], dy = b[1] - a[1];
+  Check c;
+  const auto n = p.pulses();
+  c.pulses = n[0] == uint64_t(mag(dx)) && n[1] == uint64_t(mag(dy));
+  c.end = p.ends_on_end();
+  c.error = p.line_error().max_error;
+  const double bnd = m.bound(a, b);
+  c.bound = m.strict ? c.error < bnd + 1e-12 : c.error <= bnd + 1e-12;
+  c.ticks = p.ticks == m.ticks(dx, dy);
+  return c;
+}
+
+std::string line_name(const std::array<int64_t, 4>& l) {
+  return "(" + std::to_string(l[0]) + "," + std::to_string(l[1]) + ")->(" + std::to_string(l[2]) +
+         "," + std::to_string(l[3]) + ")";
+}
+
+PaperReproduction reproduce_ratio() {
+  PaperReproduction out;
+  FigureRows rows;
+  const std::vector<Method> all = methods();
+
+  // The eight test lines through every method.
+  TextTable lines({"line", "method", "pulses x,y", "end", "max error", "bound", "ticks", "ok"});
+  Json line_json = Json::array();
+  int checked = 0, passed = 0;
+  double fixed_worst = 0;
+  for (size_t li = 0; li < pd::kRatioLines.size(); ++li) {
+    const auto& l = pd::kRatioLines[li];
+    const LatticePoint a{l[0], l[1]}, b{l[2], l[3]};
+    for (const Method& m : all) {
+      const StepPath p = m.run(a, b);
+      const Check c = check(m, a, b);
+      ++checked;
+      passed += c.all();
+      if (m.name == "fixed ratio") fixed_worst = std::max(fixed_worst, c.error);
+      const auto n = p.pulses();
+      lines.add_row({"L" + std::to_string(li + 1) + " " + line_name(l), m.name,
+                     std::to_string(n[0]) + "," + std::to_string(n[1]), c.end ? "yes" : "NO",
+                     fmt("%.4f", c.error), fmt("%.4f", m.bound(a, b)),
+                     fmt("%.0f", p.ticks) + " (" + m.ticks_rule + ")", c.all() ? "yes" : "NO"});
+      Json o = Json::object();
+      o["line"] = int(li + 1);
+      o["method"] = m.name;
+      o["pulses"] = Json(std::vector<uint64_t>{n[0], n[1]});
+      o["ends_on_end"] = c.end;
+      o["max_error"] = c.error;
+      o["bound"] = m.bound(a, b);
+      o["ticks"] = p.ticks;
+      o["ok"] = c.all();
+      line_json.push_back(std::move(o));
+    }
+  }
+  rows.add("eight lines x 6 methods: |dx|,|dy| pulses, end point, error bound, ticks",
+           std::to_string(checked) + " of " + std::to_string(checked),
+           std::to_string(passed) + " of " + std::to_string(checked), passed == checked);
+  rows.add("fixed ratio on the 8 lines: error < 1 step (Fig. 3)", "< 1", fmt("%.4f", fixed_worst),
+           fixed_worst < 1);
+
+  // Bounds over every line with |dx|, |dy| <= 40.
+  std::vector<double> worst(all.size(), 0);
+  bool exhaustive_ok = true;
+  for (int64_t dx = -40; dx <= 40; ++dx)
+    for (int64_t dy = -40; dy <= 40; ++dy)
+      for (size_t i = 0; i < all.size(); ++i) {
+        const Check c = check(all[i], {0, 0}, {dx, dy});
+        exhaustive_ok = exhaustive_ok && c.all();
+        worst[i] = std::max(worst[i], c.error);
+      }
+  Json bounds = Json::object();
+  for (size_t i = 0; i < all.size(); ++i) {
+    const Method& m = all[i];
+    const bool within =
+        m.accepted_value == 1.0 ? worst[i] < 1.0 : worst[i] <= m.accepted_value + 1e-12;
+    rows.add("all |dx|,|dy| <= 40: " + m.name + " worst error", m.accepted, fmt("%.4f", worst[i]),
+             within);
+    bounds[m.name] = worst[i];
+  }
+  rows.add("all |dx|,|dy| <= 40: every method exact counts, end, own bound, ticks", "yes",
+           exhaustive_ok ? "yes" : "no", exhaustive_ok);
+
+  const auto& l1 = pd::kRatioLines[0];
+  const StepPath ppc1 = models::ppc_line({l1[0], l1[1]}, {l1[2], l1[3]});
+  rows.add("PPC operations on line 1", std::to_string(pd::kPpcOperationsLine1),
+           std::to_string(ppc1.operations), ppc1.operations == uint64_t(pd::kPpcOperationsLine1));
+  const StepPath fr1 = models::fixed_ratio_line({l1[0], l1[1]}, {l1[2], l1[3]});
+  rows.add("fixed ratio operations on line 1", "1", std::to_string(fr1.operations),
+           fr1.operations == 1);
+
+  // Integer clock dividers at 1 MHz.
+  const double clk = 1e6, v = pd::kRatioVelocity;
+  TextTable div({"line", "half periods x,y (clocks)", "f x,y (kHz)", "wanted (kHz)", "max error",
+                 "bound at 1 MHz", "exact-f bound", "ok"});
+  Json div_json = Json::array();
+  bool div_ok = true;
+  double line1_div = 0;
+  for (size_t li = 0; li < pd::kRatioLines.size(); ++li) {
+    const auto& l = pd::kRatioLines[li];
+    const LatticePoint a{l[0], l[1]}, b{l[2], l[3]};
+    const auto plan = models::fixed_ratio_divider_plan(a, b, v, clk);
+    const StepPath p = models::fixed_ratio_divider_line(a, b, v, clk);
+    const double e = p.line_error().max_error;
+    const double bnd = models::fixed_ratio_divider_bound(a, b, v, clk);
+    const auto n = p.pulses();
+    const bool ok = e <= bnd + 1e-12 && p.ends_on_end() && n[0] == uint64_t(mag(l[2] - l[0])) &&
+                    n[1] == uint64_t(mag(l[3] - l[1]));
+    div_ok = div_ok && ok;
+    if (li == 0) line1_div = e;
+    div.add_row(
+        {"L" + std::to_string(li + 1),
+         std::to_string(plan.half_period[0]) + "," + std::to_string(plan.half_period[1]),
+         fmt("%.1f", plan.frequency_hz[0] / 1e3) + "," + fmt("%.1f", plan.frequency_hz[1] / 1e3),
+         fmt("%.1f", v * double(mag(l[2] - l[0])) / 1e3) + "," +
+             fmt("%.1f", v * double(mag(l[3] - l[1])) / 1e3),
+         fmt("%.4f", e), fmt("%.4f", bnd), fmt("%.4f", models::fixed_ratio_error_bound(a, b)),
+         ok ? "yes" : "NO"});
+    div_json.push_back(Json({{"line", int(li + 1)},
+                             {"half_period_x", plan.half_period[0]},
+                             {"half_period_y", plan.half_period[1]},
+                             {"max_error", e},
+                             {"bound", bnd},
+                             {"ok", ok}}));
+  }
+  rows.add("integer dividers at 1 MHz: line 1 error (ACCEPTANCE)", "3.1", fmt("%.4f", line1_div),
+           std::abs(line1_div - 3.1) < 0.05);
+  rows.add("integer dividers at 1 MHz: 8 lines within the divider bound", "yes",
+           div_ok ? "yes" : "no", div_ok);
+
+  out.ok = rows.ok();
+  out.text =
+      rows.text() +
+      "\nThe eight lines (error = normal distance of visited lattice points, steps):\n" +
+      lines.render() +
+      "\nFixed ratio with integer clock dividers at 1 MHz, v = 5000 (half period "
+      "H = round(f_clk / (2 v |d|)); bound [(|dx|+|dy|)/2 + t1 |dy/(2Hx) - dx/(2Hy)|] / L):\n" +
+      div.render();
+  out.json["rows"] = rows.json();
+  out.json["lines"] = std::move(line_json);
+  out.json["worst_up_to_40"] = std::move(bounds);
+  out.json["divider_1mhz"] = std::move(div_json);
+  return out;
+}
+
+}  // namespace
+
+HWINTERP_PAPER("ratio", "004 fixed-ratio velocity synthesis vs PPC, DDA, minimum deviation", 40,
+               reproduce_ratio);
+
+}  // namespace hwinterp::cli

@@ -1,0 +1,60 @@
+// Stimulus of one core, independent of the core: cases made of commands,
+// run-time setting changes, idle gaps, drains and aborts. A is the core's
+// adapter (tb/cores/<core>/<core>_adapter.h): it supplies the command payload
+// (A::Command) and its own run-time setup (A::Setup).
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "models/lattice_path.h"
+#include "tb/monitor/stepdir_monitor.h"
+
+namespace hwinterp::tb {
+
+// Run-time inputs besides the command stream.
+template <class A>
+struct RunSettings {
+  uint64_t feed = 0;  // feed word: operations per clock = feed / 2^FEED_W; >= 2^FEED_W is full
+                      // feed, 0 holds the move (no command may be offered while it is 0)
+  StepdirTiming timing;
+  typename A::Setup setup{};  // the core's own (e.g. dda_line's half preload)
+};
+
+template <class A>
+struct Item {
+  enum class Kind { kCommand, kSettings, kGap, kDrain, kAbort };
+  Kind kind = Kind::kCommand;
+  typename A::Command cmd{};  // kCommand
+  RunSettings<A> settings;    // kSettings: applied from the next clock edge on
+  uint64_t cycles = 0;        // kGap: clocks with cmd_valid_i low
+  int source_line = 0;        // job-file line, for messages
+};
+
+template <class A>
+struct Case {
+  std::string name;
+  models::LatticePoint start;  // absolute position the core's counters start from
+  RunSettings<A> settings;     // in force from reset
+  std::vector<Item<A>> items;
+};
+
+template <class A>
+Item<A> command_item(const typename A::Command& cmd, int source_line = 0) {
+  Item<A> it;
+  it.kind = Item<A>::Kind::kCommand;
+  it.cmd = cmd;
+  it.source_line = source_line;
+  return it;
+}
+
+template <class A>
+uint64_t command_count(const Case<A>& c) {
+  return static_cast<uint64_t>(std::count_if(c.items.begin(), c.items.end(), [](const auto& it) {
+    return it.kind == Item<A>::Kind::kCommand;
+  }));
+}
+
+}  // namespace hwinterp::tb

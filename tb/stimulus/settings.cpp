@@ -1,0 +1,88 @@
+#include "tb/stimulus/settings.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "tb/cli/cli_args.h"
+
+namespace hwinterp::tb {
+
+using cli::UsageError;
+
+StepdirTiming random_timing(Rng& rng) {
+  auto one = [&] {
+    return static_cast<uint32_t>(rng.chance(1, 8) ? rng.range(5, 16) : rng.range(0, 4));
+  };
+  StepdirTiming t;
+  t.step_len = one();
+  t.step_space = one();
+  t.dir_setup = one();
+  t.dir_hold = one();
+  return t;
+}
+
+uint64_t random_feed(Rng& rng, const CoreLimits& limits) {
+  const int64_t full = static_cast<int64_t>(limits.full_feed());
+  const uint64_t pick = rng.below(10);
+  if (pick < 4) return static_cast<uint64_t>(full);  // full feed
+  if (pick < 5)
+    return static_cast<uint64_t>(full + rng.range(1, full - 1));  // above full: still full
+  if (pick < 8) return static_cast<uint64_t>(rng.range(full / 4, full - 1));
+  return static_cast<uint64_t>(rng.range(full / 16, full / 4 - 1));  // slow
+}
+
+uint64_t parse_feed(const std::string& text, const CoreLimits& limits, const std::string& where) {
+  if (text == "full") return limits.full_feed();
+  if (text.find('.') != std::string::npos) {  // a fraction of the clock rate
+    const double f = cli::parse_real(text, where);
+    if (!(f > 0 && f <= 1))
+      throw UsageError(where + ": feed fraction " + text + " is outside (0, 1]");
+    const auto word =
+        static_cast<uint64_t>(std::llround(f * static_cast<double>(limits.full_feed())));
+    if (word == 0)
+      throw UsageError(where + ": feed fraction " + text + " is below one feed step (1/" +
+                       std::to_string(limits.full_feed()) + " of the clock) and rounds to 0");
+    return word;
+  }
+  const int64_t v = cli::parse_integer(text, where);
+  if (v < 0) throw UsageError(where + ": feed word " + text + " is negative");
+  return static_cast<uint64_t>(v);
+}
+
+void validate_feed_and_timing(uint64_t feed, const StepdirTiming& t, const CoreLimits& limits,
+                              const std::string& where) {
+  // feed_i is FEED_W + 1 bits wide; anything at or above 2^FEED_W is full feed.
+  if (feed >= 2 * limits.full_feed())
+    throw UsageError(where + ": feed word " + std::to_string(feed) + " does not fit feed_i (" +
+                     std::to_string(limits.feed_w + 1) + " bits)");
+  const std::pair<const char*, uint32_t> s[] = {{"step_len", t.step_len},
+                                                {"step_space", t.step_space},
+                                                {"dir_setup", t.dir_setup},
+                                                {"dir_hold", t.dir_hold}};
+  for (const auto& [name, v] : s)
+    if (v > limits.tim_max())
+      throw UsageError(where + ": " + name + " " + std::to_string(v) + " does not fit " +
+                       std::to_string(limits.tim_w) + " bits");
+}
+
+std::string point_text(const models::LatticePoint& p) {
+  std::string s = "(";
+  for (size_t i = 0; i < p.size(); ++i) s += (i ? "," : "") + std::to_string(p[i]);
+  return s + ")";
+}
+
+}  // namespace hwinterp::tb
+
+namespace hwinterp::tb {
+
+models::LatticePoint pad_point(const CoreLimits& limits, const std::vector<int64_t>& v,
+                               const std::string& what) {
+  if (v.empty() || static_cast<int>(v.size()) > limits.axes)
+    throw cli::UsageError(what + ": " + std::to_string(v.size()) + " coordinates given, " +
+                          limits.variant + " has " + std::to_string(limits.axes) + " axes");
+  models::LatticePoint p(static_cast<size_t>(limits.axes), 0);
+  std::copy(v.begin(), v.end(), p.begin());
+  return p;
+}
+
+}  // namespace hwinterp::tb

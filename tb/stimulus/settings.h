@@ -1,0 +1,45 @@
+// The shared run-time settings (feed word and step/dir timing) of stimulus:
+// random draws, parsing and validation against a variant's widths. Used by
+// every core's stimulus; the core's own setup is its adapter's.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "models/lattice_path.h"
+
+#include "tb/lockstep/core_limits.h"
+#include "tb/stimulus/rng.h"
+
+namespace hwinterp::tb {
+
+// Mostly short settings (fast runs, many stalls), sometimes long ones.
+StepdirTiming random_timing(Rng& rng);
+
+// Full feed 40 %, above full (still full) 10 %, 1/4..1 30 %, slow 20 %.
+uint64_t random_feed(Rng& rng, const CoreLimits& limits);
+
+// A feed given as `full`, a clock fraction with a '.' (0 < F <= 1) or a feed
+// word (0 = hold). Throws cli::UsageError naming `where` and the text.
+uint64_t parse_feed(const std::string& text, const CoreLimits& limits, const std::string& where);
+
+// The feed word fits feed_i (FEED_W + 1 bits) and every timing setting fits
+// TIM_W bits; throws cli::UsageError naming `where`, the setting and value.
+void validate_feed_and_timing(uint64_t feed, const StepdirTiming& timing, const CoreLimits& limits,
+                              const std::string& where);
+
+// "(a,b,c)" for messages.
+std::string point_text(const models::LatticePoint& p);
+
+}  // namespace hwinterp::tb
+
+namespace hwinterp::tb {
+
+// Leading-axis coordinates padded with zeros to the variant's axis count;
+// throws cli::UsageError (`what`: where they came from) when there are none
+// or more than the axes.
+models::LatticePoint pad_point(const CoreLimits& limits, const std::vector<int64_t>& v,
+                               const std::string& what);
+
+}  // namespace hwinterp::tb
