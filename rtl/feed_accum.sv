@@ -25,11 +25,9 @@ module feed_accum #(
   assign full   = feed_i[FEED_W];
   assign sum    = {1'b0, phase_q} + {1'b0, feed_i[FEED_W-1:0]};
   assign tick_o = run_i && (full || sum[FEED_W]);
-
-  always_comb begin
-    phase_d = phase_q;
-    if (run_i && !full && !(tick_o && hold_i)) phase_d = sum[FEED_W-1:0];
-  end
+  // A continuous assignment, not a part-select inside always_comb: Icarus 11
+  // does not support constant selects in always_* processes.
+  assign phase_d = (run_i && !full && !(tick_o && hold_i)) ? sum[FEED_W-1:0] : phase_q;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) phase_q <= '0;

@@ -3,7 +3,7 @@
 #
 # Usage: scripts/synth.sh [--variant NAME]... [--out DIR] [--generic-only]
 #                         [--seeds "1 2 3"] [--freq MHZ] [--check-netlist | --no-check-netlist]
-#                         [--cycles N]
+#                         [--commands N]
 #
 #   --variant NAME   a variant of <build>/generated/variants.txt (repeatable;
 #                    default: all of them)
@@ -15,20 +15,24 @@
 #   --freq MHZ       nextpnr target frequency (default 12; the achieved Fmax is
 #                    what the table reports)
 #   --check-netlist  simulate the Yosys generic netlist against the RTL in
-#                    lockstep (Verilator, random stimulus); on by default
+#                    lockstep (Verilator) on the input frames of a co-simulated
+#                    random stream with aborts and feed holds; on by default
 #                    except with --generic-only
-#   --cycles N       clocks of that check (default 1000000)
+#   --commands N     commands in that stream (default 1500)
 #
 # Per variant (parameters from variants.txt, the configure-time copy of
-# cmake/cores.cmake; RTL files from HWINTERP_RTL_<core> in rtl/CMakeLists.txt):
+# cmake/cores.cmake; RTL files from rtl/<core>.f):
 #   1. Yosys `synth -flatten -top <core>`: generic cells by type.
 #   2. `synth_ice40 -top <core>`: LUT4 / SB_CARRY / flip-flops of the bare core.
-#   3. `synth_ice40` of rtl/synth/<core>_harness.sv (the core behind a few
-#      registered pins) and nextpnr-ice40 --hx8k --package ct256 per seed:
-#      placed LUT/FF/LC and "Max frequency for clock".
+#   3. `synth_ice40` of a pin harness generated for the core from its ports
+#      (scripts/synth/make_harness.py: the core behind a few registered pins)
+#      and nextpnr-ice40 --hx8k --package ct256 per seed: placed LUT/FF/LC and
+#      "Max frequency for clock".
 #   4. the same netlist with nextpnr-ice40 --up5k --package sg48: fits or not.
-#   5. (--check-netlist) rtl/synth/<core>_netlist_tb.sv: step 1's netlist
-#      against the RTL, every output every clock.
+#   5. (--check-netlist) `hwinterp cosim --dump-frames` writes a random
+#      stream's input frames and a replay testbench; with +define+NETLIST it
+#      runs step 1's netlist beside the RTL and compares every output every
+#      clock (needs the build's hwinterp; built here if missing).
 # Writes <out>/synth.md, <out>/synth.json and prints the markdown table. Logs
 # and intermediate files stay in <out>/<variant>/. Honours HWINTERP_BUILD_DIR.
 set -euo pipefail
@@ -44,7 +48,7 @@ generic_only=0
 seeds="1 2 3"
 freq=12
 check=""
-cycles=1000000
+commands=1500
 while [ $# -gt 0 ]; do
   case "$1" in
     --variant) [ $# -ge 2 ] || usage; variants+=("$2"); shift 2 ;;
@@ -54,7 +58,7 @@ while [ $# -gt 0 ]; do
     --freq) [ $# -ge 2 ] || usage; freq=$2; shift 2 ;;
     --check-netlist) check=1; shift ;;
     --no-check-netlist) check=0; shift ;;
-    --cycles) [ $# -ge 2 ] || usage; cycles=$2; shift 2 ;;
+    --commands) [ $# -ge 2 ] || usage; commands=$2; shift 2 ;;
     -h|--help) usage ;;
     *) echo "synth: unknown argument '$1'" >&2; usage ;;
   esac
@@ -66,7 +70,7 @@ for s in "${seed_list[@]}"; do
   [[ $s =~ ^[0-9]+$ ]] || die "--seeds: '$s' is not a non-negative integer"
 done
 [[ $freq =~ ^[0-9]+([.][0-9]+)?$ ]] || die "--freq: '$freq' is not a frequency in MHz"
-[[ $cycles =~ ^[1-9][0-9]*$ ]] || die "--cycles: '$cycles' is not a positive integer"
+[[ $commands =~ ^[1-9][0-9]*$ ]] || die "--commands: '$commands' is not a positive integer"
 
 "$root/scripts/setup.sh"
 
@@ -96,6 +100,14 @@ if [ ! -f "$vfile" ] || [ "$root/cmake/cores.cmake" -nt "$vfile" ]; then
   [ -f "$vfile" ] || die "configure did not write $vfile; see $out/configure.log"
 fi
 
+# The netlist check replays co-simulation frames: it needs hwinterp.
+hw=$build/tb/hwinterp
+if [ "$check" -eq 1 ]; then
+  echo "synth: building hwinterp for the netlist check (log: $out/build.log)" >&2
+  cmake --build "$build" -j "${HWINTERP_JOBS:-2}" --target hwinterp >"$out/build.log" 2>&1 ||
+    die "step 'build hwinterp' failed; see $out/build.log"
+fi
+
 declare -A vline=()
 all=()
 while read -r name rest; do
@@ -112,14 +124,11 @@ else
   done
 fi
 
-# The RTL files of a core, from its HWINTERP_RTL_<core> list in rtl/CMakeLists.txt
-# (the list Verilator gets), so the file list is not repeated here.
+# The RTL files of a core, from rtl/<core>.f (the list Verilator gets too).
 rtl_files() {
-  local core=$1
-  sed -n "/set(HWINTERP_RTL_${core}\$/,/)/p; /set(HWINTERP_RTL_${core}[[:space:]]/,/)/p" \
-    "$root/rtl/CMakeLists.txt" |
-    grep -oE '\$\{CMAKE_CURRENT_SOURCE_DIR\}/[^[:space:])]+' |
-    sed "s|\${CMAKE_CURRENT_SOURCE_DIR}|$root/rtl|"
+  local list=$root/rtl/$1.f
+  [ -f "$list" ] || die "no RTL file list $list for core $1"
+  grep -v '^#' "$list" | sed "s|^|$root/rtl/|"
 }
 
 # run_step STEP LOG CMD...: runs CMD with its output in LOG, appends the wall
@@ -146,8 +155,8 @@ prepare_core() {
   local core=$1 srcdir files
   srcdir=$out/src/$core
   mapfile -t files < <(rtl_files "$core")
-  [ ${#files[@]} -gt 0 ] || die "no HWINTERP_RTL_${core} file list in $root/rtl/CMakeLists.txt"
-  for f in "${files[@]}"; do [ -f "$f" ] || die "RTL file $f (HWINTERP_RTL_${core}) not found"; done
+  [ ${#files[@]} -gt 0 ] || die "rtl/$core.f lists no file"
+  for f in "${files[@]}"; do [ -f "$f" ] || die "RTL file $f (rtl/$core.f) not found"; done
   mkdir -p "$srcdir"
   python3 "$root/scripts/synth/yosys_compat.py" "${files[@]}" 2>"$srcdir/compat_check.log" ||
     die "the $core RTL has constructs Yosys 0.23 misreads; see $srcdir/compat_check.log:
@@ -190,11 +199,14 @@ for variant in "${variants[@]}"; do
     run_step ice40_core "$vdir/ice40_core.log" yosys -p "$read_rtl; $chparam $core;
       synth_ice40 -top $core; tee -q -o $vdir/ice40_core_stat.json stat -json"
 
-    # 3. The harness, mapped once and placed per seed.
-    harness=$root/rtl/synth/${core}_harness.sv
-    [ -f "$harness" ] || die "no harness $harness for core $core"
-    run_step ice40_harness "$vdir/ice40_harness.log" yosys -p "$read_rtl $harness;
-      $chparam ${core}_harness; synth_ice40 -top ${core}_harness -json $vdir/harness.json;
+    # 3. The harness, generated from the core's ports, mapped once and placed per seed.
+    run_step ports "$vdir/ports.log" yosys -p "$read_rtl; $chparam $core; hierarchy -top $core;
+      write_json $vdir/ports.json"
+    run_step make_harness "$vdir/make_harness.log" sh -c \
+      'python3 "$1" "$2" "$3" $4 >"$5"' _ "$root/scripts/synth/make_harness.py" "$vdir/ports.json" \
+      "$core" "$params_kv" "$vdir/${core}_harness.sv"
+    run_step ice40_harness "$vdir/ice40_harness.log" yosys -p "$read_rtl $vdir/${core}_harness.sv;
+      synth_ice40 -top ${core}_harness -json $vdir/harness.json;
       tee -q -o $vdir/harness_stat.json stat -json"
     for s in "${seed_list[@]}"; do
       run_step "pnr_hx8k_seed$s" "$vdir/pnr_hx8k_seed$s.log" nextpnr-ice40 --hx8k --package ct256 \
@@ -224,24 +236,20 @@ for variant in "${variants[@]}"; do
       'BEGIN { printf "%s\t%.2f\n", s, b - a }' >>"$vdir/times.tsv"
   fi
 
-  # 5. The generic netlist against the RTL as Verilator reads it.
+  # 5. The generic netlist against the RTL as Verilator reads it, on the
+  #    frames of a co-simulated random stream (with aborts and feed holds).
   if [ "$check" -eq 1 ]; then
-    tb=$root/rtl/synth/${core}_netlist_tb.sv
-    if [ -f "$tb" ]; then
-      mapfile -t rtl < <(rtl_files "$core")
-      gflags=()
-      for kv in "${kvs[@]}"; do gflags+=("-G$kv"); done
-      run_step netlist_build "$vdir/netlist_build.log" verilator --binary -j "${HWINTERP_JOBS:-2}" \
-        -Wno-fatal -Wno-lint -Wno-style --x-assign unique --x-initial unique \
-        --Mdir "$vdir/netlist_obj" --top-module "${core}_netlist_tb" "${gflags[@]}" \
-        -GCYCLES="$cycles" "${rtl[@]}" "$vdir/${core}_net.v" "$tb" -o tb
-      run_step netlist_check "$vdir/netlist_check.log" "$vdir/netlist_obj/tb" +verilator+seed+1
-      grep -q 'netlist matches RTL' "$vdir/netlist_check.log" ||
-        die "step 'netlist_check' did not report a match for $variant; see $vdir/netlist_check.log"
-    else
-      echo "synth: no $tb; netlist check skipped for $variant" >&2
-      printf 'check\tno testbench\n' >>"$vdir/info.tsv"
-    fi
+    mapfile -t rtl < <(rtl_files "$core")
+    run_step netlist_frames "$vdir/netlist_frames.log" "$hw" cosim --core "$core" --variant "$variant" \
+      --random "$commands" --seed 1 --with-aborts --with-holds --mode direct \
+      --dump-frames "$vdir/frames.hex"
+    run_step netlist_build "$vdir/netlist_build.log" verilator --binary -j "${HWINTERP_JOBS:-2}" \
+      -Wno-fatal -Wno-lint -Wno-style --x-assign unique --x-initial unique -DNETLIST \
+      --Mdir "$vdir/netlist_obj" --top-module replay_tb "${rtl[@]}" "$vdir/${core}_net.v" \
+      "$vdir/frames.hex.sv" -o tb
+    run_step netlist_check "$vdir/netlist_check.log" "$vdir/netlist_obj/tb" +frames="$vdir/frames.hex"
+    grep -q 'netlist matches RTL' "$vdir/netlist_check.log" ||
+      die "step 'netlist_check' did not report a match for $variant; see $vdir/netlist_check.log"
   fi
 done
 

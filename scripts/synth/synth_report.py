@@ -258,9 +258,12 @@ def markdown(results):
     notes = ["", "Notes:", ""]
     r0 = results[0]
     notes.append("- %s; %s." % (r0["tools"]["yosys"], r0["tools"]["nextpnr"] or "nextpnr not run"))
+    notes.append("- Netlist vs RTL: the Yosys generic netlist and the RTL side by side in Verilator "
+                 "on the input frames of a co-simulated random stream with aborts and feed holds "
+                 "(`hwinterp cosim --dump-frames`), every output compared on every clock.")
     if full:
         notes.append("- iCE40 core: `synth_ice40` of the bare core (not placed). Harness: the core "
-                     "plus rtl/synth/<core>_harness.sv, mapped by `synth_ice40` and placed by "
+                     "plus the pin harness scripts/synth/make_harness.py generates for it, mapped by `synth_ice40` and placed by "
                      "nextpnr-ice40 --hx8k --package ct256; its LUT4/FF are the packed counts of "
                      "the placed design, LC the logic cells used. Overhead = harness netlist - "
                      "bare core.")

@@ -81,6 +81,8 @@ int run_cosim(int argc, char** argv, int first) {
       .option("job", "FILE", "a job file (cases, commands, settings, aborts; see README)")
       .option("random", "N", "a seeded random stream of N commands")
       .option("seed", "S", "seed of --random (printed; a fresh one when omitted)")
+      .flag("with-aborts", "--random: abort_i pulses at random depths into the stream")
+      .flag("with-holds", "--random: feed holds (feed 0 for a while) in the stream")
       .option("mode", "MODE", "systemc (SC_MODULE + verilator --sc) or direct (tick() + --cc)",
               "systemc")
       .option("feed", "full|WORD|F", "feed: full, a feed word, or a clock fraction like 0.25")
@@ -107,8 +109,10 @@ int run_cosim(int argc, char** argv, int first) {
     core = &tb::find_core(core_name);
     core->declare_options(args);
   }
+  bool help = false;
+  for (int i = first; i < argc; ++i) help = help || !std::strcmp(argv[i], "--help");
+  if (!core && !help) throw UsageError("--core is required (cores: " + tb::core_list() + ")");
   if (parse_or_help(args, argc, argv, first)) return kExitOk;
-  if (!core) throw UsageError("--core is required (cores: " + tb::core_list() + ")");
 
   const tb::VariantEntry& variant = core->select(args);
   const std::string mode = args.choice("mode", {"systemc", "direct"});
@@ -121,8 +125,9 @@ int run_cosim(int argc, char** argv, int first) {
   if (sources != 1)
     throw UsageError("give exactly one of " + source_names + " (" + std::to_string(sources) +
                      " given)");
-  if (args.given("seed") && !args.given("random"))
-    throw UsageError("--seed " + args.str("seed") + " goes with --random");
+  for (const char* o : {"seed", "with-aborts", "with-holds"})
+    if (args.given(o) && !args.given("random"))
+      throw UsageError(std::string("--") + o + " goes with --random");
   if (args.given("vcd") && args.given("fst")) throw UsageError("give one of --vcd and --fst");
   if (args.given("trace-window") && !args.given("vcd") && !args.given("fst"))
     throw UsageError("--trace-window " + args.str("trace-window") + " needs --vcd or --fst");

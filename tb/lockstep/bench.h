@@ -285,6 +285,8 @@ class Bench {
             ++item_;
             A::apply(it.cmd, path_target_);
             path_row("target", path_target_);
+          } else {
+            ++results_.back().offer_wait_cycles;
           }
           return;
       }

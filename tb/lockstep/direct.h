@@ -40,6 +40,28 @@ OutPins read_outputs(const Rtl& rtl) {
   return p;
 }
 
+// Drives one frame into the Verilated model and the HLS core's inputs.
+template <class A, class Cfg, class Rtl, class Inputs>
+void drive_inputs(const Frame<A>& f, Rtl& rtl, Inputs& in) {
+  rtl.rst_ni = f.rst_n;
+  rtl.cmd_valid_i = f.cmd_valid;
+  rtl.feed_i = static_cast<uint32_t>(f.feed);
+  rtl.step_len_i = f.timing.step_len;
+  rtl.step_space_i = f.timing.step_space;
+  rtl.dir_setup_i = f.timing.dir_setup;
+  rtl.dir_hold_i = f.timing.dir_hold;
+  rtl.abort_i = f.abort;
+  in.rst_n = f.rst_n;
+  in.cmd_valid = f.cmd_valid;
+  in.feed = f.feed;
+  in.timing.step_len = f.timing.step_len;
+  in.timing.step_space = f.timing.step_space;
+  in.timing.dir_setup = f.timing.dir_setup;
+  in.timing.dir_hold = f.timing.dir_hold;
+  in.abort = f.abort;
+  A::template drive<Cfg>(f.cmd, f.setup, rtl, in.cmd);
+}
+
 // Runs `bench` to its end in the direct mode.
 template <class A, class Cfg>
 void run_direct(Bench<A>& bench) {
@@ -60,24 +82,7 @@ void run_direct(Bench<A>& bench) {
   rtl.rst_ni = 0;
   rtl.eval();
   while (!bench.finished()) {
-    const Frame<A>& f = bench.next_frame();
-    rtl.rst_ni = f.rst_n;
-    rtl.cmd_valid_i = f.cmd_valid;
-    rtl.feed_i = static_cast<uint32_t>(f.feed);
-    rtl.step_len_i = f.timing.step_len;
-    rtl.step_space_i = f.timing.step_space;
-    rtl.dir_setup_i = f.timing.dir_setup;
-    rtl.dir_hold_i = f.timing.dir_hold;
-    rtl.abort_i = f.abort;
-    in.rst_n = f.rst_n;
-    in.cmd_valid = f.cmd_valid;
-    in.feed = f.feed;
-    in.timing.step_len = f.timing.step_len;
-    in.timing.step_space = f.timing.step_space;
-    in.timing.dir_setup = f.timing.dir_setup;
-    in.timing.dir_hold = f.timing.dir_hold;
-    in.abort = f.abort;
-    A::template drive<Cfg>(f.cmd, f.setup, rtl, in.cmd);
+    drive_inputs<A, Cfg>(bench.next_frame(), rtl, in);
     // Inputs and the rising edge in one eval: with rst_ni low the RTL's
     // asynchronous reset wins, as tick() with rst_n low does.
     rtl.clk_i = 1;

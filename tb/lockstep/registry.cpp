@@ -75,9 +75,9 @@ VariantEntry make_variant() {
     if (args.given("job")) {
       cases = parse_job<A>(args.str("job"), l, settings);
     } else if (args.given("random")) {
-      Case<A> c = random_case<A>(l, static_cast<uint64_t>(args.integer("random", 1, 100000000)),
-                                 options.seed);
-      cases.push_back(std::move(c));
+      cases.push_back(random_case<A>(l, static_cast<uint64_t>(args.integer("random", 1, 100000000)),
+                                     options.seed,
+                                     {args.given("with-aborts"), args.given("with-holds")}));
     } else {
       cases = A::cases_from_options(args, l, settings);
     }

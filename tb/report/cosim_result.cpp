@@ -24,6 +24,7 @@ Json CaseResult::to_json() const {
   j["passed"] = passed();
   j["cycles"] = cycles;
   j["commands"] = commands;
+  j["offer_wait_cycles"] = offer_wait_cycles;
   j["first_step_cycle"] = first_step_cycle;
   j["steps"] = steps;
   j["start_position"] = start;

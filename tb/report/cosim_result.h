@@ -51,8 +51,9 @@ struct CaseResult {
   uint64_t cycles = 0;    // clock edges simulated in this case, reset included
   uint64_t commands = 0;  // commands taken by the core
   uint64_t commands_offered = 0;
-  uint64_t first_step_cycle = 0;  // case cycle of the first step_o rise (0: none)
-  std::vector<uint64_t> steps;    // per axis, counted at step_o rising edges
+  uint64_t offer_wait_cycles = 0;  // clocks a command was offered and not taken (backpressure)
+  uint64_t first_step_cycle = 0;   // case cycle of the first step_o rise (0: none)
+  std::vector<uint64_t> steps;     // per axis, counted at step_o rising edges
   models::LatticePoint start, end_position, expected_end_position;
   double max_path_error_steps = 0;
   double error_bound = 0;  // the documented bound the error is checked against

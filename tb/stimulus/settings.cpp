@@ -9,9 +9,10 @@ namespace hwinterp::tb {
 
 using cli::UsageError;
 
-StepdirTiming random_timing(Rng& rng) {
+StepdirTiming random_timing(Rng& rng, const CoreLimits& limits) {
   auto one = [&] {
-    return static_cast<uint32_t>(rng.chance(1, 8) ? rng.range(5, 16) : rng.range(0, 4));
+    const int64_t v = rng.chance(1, 8) ? rng.range(5, 16) : rng.range(0, 4);
+    return static_cast<uint32_t>(std::min<uint64_t>(static_cast<uint64_t>(v), limits.tim_max()));
   };
   StepdirTiming t;
   t.step_len = one();

@@ -14,8 +14,9 @@
 
 namespace hwinterp::tb {
 
-// Mostly short settings (fast runs, many stalls), sometimes long ones.
-StepdirTiming random_timing(Rng& rng);
+// Mostly short settings (fast runs, many stalls), sometimes long ones (up
+// to 16 clocks, or what TIM_W holds).
+StepdirTiming random_timing(Rng& rng, const CoreLimits& limits);
 
 // Full feed 40 %, above full (still full) 10 %, 1/4..1 30 %, slow 20 %.
 uint64_t random_feed(Rng& rng, const CoreLimits& limits);

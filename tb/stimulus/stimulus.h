@@ -37,7 +37,7 @@ RunSettings<A> random_settings(Rng& rng, const CoreLimits& limits) {
   RunSettings<A> s;
   s.feed = random_feed(rng, limits);
   s.setup = A::random_setup(rng);
-  s.timing = random_timing(rng);
+  s.timing = random_timing(rng, limits);
   return s;
 }
 

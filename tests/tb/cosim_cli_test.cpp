@@ -1,19 +1,23 @@
 // `hwinterp cosim` and `hwinterp regress` through the real executable: the
 // command-line contract of DESIGN.md (JSON keys, exit codes 0/1/2, one-line
-// errors naming the value, traces, the replay command).
+// errors naming the value, traces, aborts, the replay command).
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <fstream>
 
 #include "run_hwinterp.h"
+#include "tb/report/json.h"
 
 namespace {
 
+using hwinterp::Json;
 using hwinterp::testing::CliResult;
 using hwinterp::testing::run_hwinterp;
 using hwinterp::testing::scratch_dir;
 using hwinterp::testing::slurp;
+
+Json read_json(const std::string& path) { return Json::parse(slurp(path)); }
 
 TEST(CosimCli, LineInBothModesWritesTheContractJson) {
   const std::string dir = scratch_dir("cosim_json");
@@ -22,21 +26,48 @@ TEST(CosimCli, LineInBothModesWritesTheContractJson) {
     const CliResult r = run_hwinterp(std::string("cosim --core dda_line --line 0,0,20,40 --mode ") +
                                      mode + " --json " + json);
     ASSERT_EQ(r.code, 0) << r.out << r.err;
-    const std::string j = slurp(json);
-    for (const char* key :
-         {"\"core\": \"dda_line\"", "\"seed\"", "\"cycles\"", "\"commands\": 1",
-          "\"steps\": [20, 40]", "\"end_position\": [20, 40]",
-          "\"expected_end_position\": [20, 40]", "\"max_path_error_steps\"", "\"mismatches\": 0",
-          "\"timing_violations\": 0", "\"first_mismatch\": null"})
-      EXPECT_NE(j.find(key), std::string::npos) << key << " missing in\n" << j;
-    EXPECT_NE(j.find(std::string("\"mode\": \"") + mode + "\""), std::string::npos) << j;
+    const Json j = read_json(json);
+    EXPECT_EQ(j["core"], "dda_line");
+    EXPECT_EQ(j["variant"], "dda_line_n2");
+    EXPECT_EQ(j["mode"], mode);
+    EXPECT_TRUE(j.contains("seed"));
+    EXPECT_GT(j["cycles"].get<int>(), 40);
+    EXPECT_EQ(j["commands"], 1);
+    EXPECT_EQ(j["steps"], Json({20, 40}));
+    EXPECT_EQ(j["end_position"], Json({20, 40}));
+    EXPECT_EQ(j["expected_end_position"], Json({20, 40}));
+    EXPECT_LT(j["max_path_error_steps"].get<double>(), 1.0);
+    EXPECT_EQ(j["mismatches"], 0);
+    EXPECT_EQ(j["timing_violations"], 0);
+    EXPECT_TRUE(j["first_mismatch"].is_null());
+    EXPECT_TRUE(j["abort"].is_null());
+    ASSERT_EQ(j["cases"].size(), 1u);
+    EXPECT_EQ(j["cases"][0]["passed"], true);
   }
 }
 
 TEST(CosimCli, RandomRunPrintsItsSeed) {
   const CliResult r = run_hwinterp("cosim --core dda_line --axes 4 --random 5 --mode direct");
   ASSERT_EQ(r.code, 0) << r.out << r.err;
-  EXPECT_NE(r.out.find(", seed "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("(dda_line_n4), mode direct, seed "), std::string::npos) << r.out;
+}
+
+// --abort-at: the JSON's abort object, on the path, within the bound.
+TEST(CosimCli, AbortAtReportsWhereTheMachineIs) {
+  const std::string json = scratch_dir("cosim_abort") + "/a.json";
+  const CliResult r = run_hwinterp(
+      "cosim --core dda_line --line 0,0,200,100 --mode direct --step-len 3 --abort-at 150 "
+      "--json " +
+      json);
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  const Json j = read_json(json);
+  ASSERT_FALSE(j["abort"].is_null()) << j.dump();
+  EXPECT_EQ(j["abort"]["cycle"], 150);
+  EXPECT_TRUE(j["abort"]["on_reference_path"].get<bool>());
+  EXPECT_LE(j["abort"]["idle_after_clocks"].get<int>(), 2);
+  EXPECT_EQ(j["abort"]["position"], j["end_position"]);
+  EXPECT_LT(j["end_position"][0].get<int>(), 200);
+  EXPECT_GT(j["end_position"][0].get<int>(), 0);
 }
 
 TEST(CosimCli, MismatchExitsOneWithReplayCommandAndTrace) {
@@ -46,16 +77,17 @@ TEST(CosimCli, MismatchExitsOneWithReplayCommandAndTrace) {
       "--inject mismatch@77 --json " +
       dir + "/m.json --vcd " + dir + "/m.vcd --trace-window 30");
   EXPECT_EQ(r.code, 1) << r.out << r.err;
-  const std::string j = slurp(dir + "/m.json");
-  EXPECT_NE(j.find("\"cycle\": 77"), std::string::npos) << j;
-  EXPECT_NE(j.find("\"signal\": \"step_o[0]\""), std::string::npos) << j;
-  EXPECT_NE(r.out.find("replay: hwinterp cosim --core dda_line --random 20 --seed 9 --mode direct "
-                       "--inject mismatch@77 --vcd mismatch.vcd --trace-window 200"),
-            std::string::npos)
-      << r.out;
+  const Json j = read_json(dir + "/m.json");
+  EXPECT_EQ(j["first_mismatch"]["cycle"], 77);
+  EXPECT_EQ(j["first_mismatch"]["signal"], "step_o[0]");
+  const std::string replay =
+      "hwinterp cosim --core dda_line --random 20 --seed 9 --mode direct "
+      "--inject mismatch@77 --vcd mismatch.vcd --trace-window 200";
+  EXPECT_EQ(j["replay"], replay);
+  EXPECT_NE(r.out.find("replay: " + replay), std::string::npos) << r.out;
   // The window holds the last 30 cycles: time stamps 48..77 (10 ns a cycle).
   const std::string vcd = slurp(dir + "/m.vcd");
-  EXPECT_NE(vcd.find("$var wire 1"), std::string::npos);
+  EXPECT_NE(vcd.find("$var wire 32 "), std::string::npos);  // cmd_delta_i_0
   EXPECT_NE(vcd.find("\n#480\n"), std::string::npos);
   EXPECT_NE(vcd.find("\n#770\n"), std::string::npos);
   EXPECT_EQ(vcd.find("\n#470\n"), std::string::npos);
@@ -99,6 +131,36 @@ TEST(CosimCli, PathCsvHasStartTargetAndEveryMove) {
   EXPECT_NE(last.find(",move,40,20"), std::string::npos) << last;
 }
 
+// --dump-frames writes the frames and a replay testbench for the variant;
+// Icarus Verilog runs it on the RTL and reproduces the co-simulation's
+// cycles, steps, end position and done pulses.
+TEST(CosimCli, DumpedFramesReplayInIcarus) {
+  const std::string dir = scratch_dir("cosim_frames");
+  const CliResult r = run_hwinterp(
+      "cosim --core dda_line --variant dda_line_edge --random 12 "
+      "--seed 4 --mode direct --dump-frames " +
+      dir + "/f.hex --json " + dir + "/f.json");
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  const std::string rtl = std::string(HWINTERP_SOURCE_DIR) + "/rtl/";
+  std::string files;
+  std::ifstream list(rtl + "dda_line.f");
+  for (std::string name; std::getline(list, name);) files += " " + rtl + name;
+  const std::string cmd = "cd " + dir + " && iverilog -g2012 -s replay_tb -o replay f.hex.sv" +
+                          files + " && vvp -n replay +frames=f.hex > replay.log";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  const Json j = read_json(dir + "/f.json");
+  const std::string log = slurp(dir + "/replay.log");
+  EXPECT_NE(log.find("cycles " + std::to_string(j["cycles"].get<int>())), std::string::npos) << log;
+  EXPECT_NE(log.find("done_pulses " + std::to_string(j["commands"].get<int>())), std::string::npos)
+      << log;
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NE(log.find("axis " + std::to_string(i) + " steps " +
+                       std::to_string(j["steps"][i].get<int>()) + " pos " +
+                       std::to_string(j["end_position"][i].get<int>())),
+              std::string::npos)
+        << log;
+}
+
 TEST(CosimCli, TimingViolationExitsOne) {
   const CliResult r = run_hwinterp(
       "cosim --core dda_line --line 0,0,8,0 --mode direct "
@@ -108,22 +170,25 @@ TEST(CosimCli, TimingViolationExitsOne) {
 }
 
 // Bad input: exit 2, one line on stderr naming the offending value, and no
-// simulation started (nothing on stdout after the parse).
+// simulation started.
 TEST(CosimCli, BadInputOneLineNamingTheValue) {
   const std::pair<const char*, const char*> cases[] = {
       {"--core dda_line --line 0,0,3000000000,0", "3000000000"},
       {"--core dda_line --line 0,0,1x,2", "'1x'"},
       {"--core dda_line --line 0,0,1", "'0,0,1'"},
       {"--core ppc_nope --line 0,0,1,1", "'ppc_nope'"},
-      {"--core dda_line --axes 3 --line 0,0,1,1", "3 axes"},
+      {"--core dda_line --axes 5 --line 0,0,1,1", "5 axes"},
+      {"--core dda_line --variant dda_line_n9 --line 0,0,1,1", "'dda_line_n9'"},
       {"--core dda_line --line 0,0,1,1 --mode fast", "'fast'"},
       {"--core dda_line --random 0", "--random: 0"},
       {"--core dda_line --random 5 --seed -1", "'-1'"},
       {"--core dda_line --line 0,0,1,1 --random 3", "2 given"},
       {"--core dda_line --line 0,0,1,1 --feed 0", "--feed: 0"},
+      {"--core dda_line --line 0,0,1,1 --feed 0.000001", "0.000001"},
       {"--core dda_line --line 0,0,1,1 --dir-hold 65536", "65536"},
       {"--core dda_line --job /no/such.job", "/no/such.job"},
       {"--core dda_line --line 0,0,1,1 --inject flip@3", "'flip@3'"},
+      {"--core dda_line --line 0,0,1,1 --abort-at 0", "--abort-at: 0"},
       {"--core dda_line --line 0,0,1,1 --vcd /no/dir/t.vcd", "/no/dir/t.vcd"},
       {"--line 0,0,1,1", "--core"},
   };
@@ -132,36 +197,49 @@ TEST(CosimCli, BadInputOneLineNamingTheValue) {
     EXPECT_EQ(r.code, 2) << args << "\n" << r.out << r.err;
     EXPECT_NE(r.err.find(named), std::string::npos) << args << ": " << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
+    EXPECT_EQ(r.out, "") << args;
   }
 }
 
-TEST(CosimCli, HelpListsTheContract) {
+// --help lists the shared options and every core and variant; with --core
+// it adds the core's own options.
+TEST(CosimCli, HelpListsTheContractCoresAndVariants) {
   const CliResult r = run_hwinterp("cosim --help");
   EXPECT_EQ(r.code, 0);
-  for (const char* o :
-       {"--core", "--line", "--job", "--random", "--seed", "--mode", "--json", "--vcd", "--fst"})
+  for (const char* o : {"--core", "--variant", "--job", "--random", "--seed", "--mode", "--json",
+                        "--vcd", "--fst", "--abort-at", "dda_line (dda_line_n2, dda_line_n4"})
     EXPECT_NE(r.out.find(o), std::string::npos) << o;
+  EXPECT_EQ(r.out.find("--half-preload"), std::string::npos);
+  const CliResult d = run_hwinterp("cosim --core dda_line --help");
+  for (const char* o : {"--line", "--paper-lines", "--half-preload"})
+    EXPECT_NE(d.out.find(o), std::string::npos) << o;
 }
 
-TEST(RegressCli, SmallRegressionPassesAndReports) {
+TEST(RegressCli, SmallRegressionPassesAndReportsEveryCore) {
   const std::string json = scratch_dir("regress") + "/r.json";
   const CliResult r = run_hwinterp("regress --random 10 --seed 4 --json " + json);
   ASSERT_EQ(r.code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("PASS"), std::string::npos);
-  const std::string j = slurp(json);
-  EXPECT_NE(j.find("\"passed\": true"), std::string::npos);
-  // Every variant in both modes: 4 runs, each with the 16 paper-line cases
-  // (plain and half preload) and the random stream.
-  auto count = [&](const std::string& needle) {
-    size_t n = 0;
-    for (size_t at = j.find(needle); at != std::string::npos; at = j.find(needle, at + 1)) ++n;
-    return n;
-  };
-  EXPECT_EQ(count("\"cycles_per_second\""), 4u) << j;
-  EXPECT_EQ(count("\"case\": \"004_line1\""), 4u);
-  EXPECT_EQ(count("\"case\": \"004_line8_half\""), 4u);
-  EXPECT_EQ(count("\"case\": \"random\""), 4u);
-  EXPECT_EQ(count("\"passed\": false"), 0u);
+  const Json j = read_json(json);
+  EXPECT_EQ(j["passed"], true);
+  size_t variants = 0;
+  for (const auto& [core, summary] : j["cores"].items()) {
+    EXPECT_EQ(summary["passed"], true) << core;
+    variants += summary["runs"].get<size_t>() / 2;  // both modes
+  }
+  EXPECT_GE(variants, 3u);
+  ASSERT_EQ(j["runs"].size(), 2 * variants);
+  for (const auto& run : j["runs"]) {
+    EXPECT_EQ(run["passed"], true);
+    bool random = false;
+    for (const auto& c : run["cases"]) {
+      EXPECT_EQ(c["passed"], true) << c["variant"] << " " << c["case"];
+      // Each case is timed from its own first clock: short cases take little.
+      if (c["cycles"].get<int>() < 1000) EXPECT_LT(c["seconds"].get<double>(), 0.05);
+      random = random || c["case"] == "random_abort_hold";
+    }
+    EXPECT_TRUE(random) << run["variant"];
+  }
 }
 
 }  // namespace

@@ -1,0 +1,313 @@
+// The conformance suite: what every step-emitting core promises through the
+// shared port contract, run against every core and variant of
+// cmake/cores.cmake (GoogleTest typed tests; a new core joins by being
+// declared there). HLS and RTL in lockstep, both against the core's reference
+// model, in the direct mode unless a test says otherwise.
+//
+// SystemC tests elaborate once per process: run them through ctest, which
+// gives every test its own process (gtest_discover_tests).
+#include <gtest/gtest.h>
+
+#include "lockstep_support.h"
+#include "run_hwinterp.h"
+
+namespace hwinterp::tb::testing {
+namespace {
+
+template <class V>
+class Conformance : public ::testing::Test {
+ protected:
+  using A = typename V::Adapter;
+  using Kind = typename Item<A>::Kind;
+  CoreLimits l = V::limits();
+
+  // A command that keeps the core busy for a while (at least `work` engine
+  // operations), drawn from the core's own random generator.
+  typename A::Command long_command(uint64_t work, uint64_t seed) {
+    Rng rng(seed);
+    models::LatticePoint at(static_cast<size_t>(l.axes), 0);
+    typename A::Command previous{};
+    for (int tries = 0; tries < 100000; ++tries) {
+      const auto c = A::random_command(rng, l, at, previous);
+      if (A::work(c) >= work) return c;
+      previous = c;
+    }
+    ADD_FAILURE() << "no command with " << work << " operations";
+    return {};
+  }
+
+  Case<A> one_command_case(const typename A::Command& cmd) {
+    Case<A> c;
+    c.name = "one";
+    c.start.assign(static_cast<size_t>(l.axes), 0);
+    c.settings = default_settings<A>(l);
+    c.items.push_back(command_item<A>(cmd));
+    return c;
+  }
+
+  Item<A> settings_item(const RunSettings<A>& s) {
+    Item<A> it;
+    it.kind = Kind::kSettings;
+    it.settings = s;
+    return it;
+  }
+  Item<A> gap(uint64_t cycles) {
+    Item<A> it;
+    it.kind = Kind::kGap;
+    it.cycles = cycles;
+    return it;
+  }
+
+  // Steps per axis the reference model expects for the case's commands.
+  std::vector<uint64_t> model_steps(const Case<A>& c) {
+    std::vector<uint64_t> steps(static_cast<size_t>(l.axes), 0);
+    models::LatticePoint at = c.start;
+    RunSettings<A> s = c.settings;
+    for (const auto& it : c.items) {
+      if (it.kind == Kind::kSettings) s = it.settings;
+      if (it.kind != Kind::kCommand) continue;
+      typename A::Reference ref(at, it.cmd, s.setup, l);
+      Move m;
+      while (ref.next(m))
+        for (size_t i = 0; i < steps.size(); ++i) steps[i] += m.step[i] != 0;
+      A::apply(it.cmd, at);
+    }
+    return steps;
+  }
+};
+
+TYPED_TEST_SUITE(Conformance, AllVariants, VariantName);
+
+// After reset, and after a reset in the middle of a move, both faces show
+// the idle state: ready, no step, dir 0, position 0, not busy, no done.
+TYPED_TEST(Conformance, ResetStateAndResetMidMove) {
+  using A = typename TypeParam::Adapter;
+  using Cfg = typename TypeParam::Cfg;
+  using Core = typename A::template Hls<Cfg>;
+  VerilatedContext context;
+  typename RtlOf<Cfg>::Cc rtl(&context);
+  Core hls;
+  typename Core::Inputs in;
+  Frame<A> f;
+  f.feed = this->l.full_feed();
+  f.timing = {1, 1, 1, 1};
+  OutPins idle;
+  idle.cmd_ready = true;
+  auto edge = [&] {
+    drive_inputs<A, Cfg>(f, rtl, in);
+    rtl.clk_i = 1;
+    rtl.eval();
+    hls.tick(in);
+    const OutPins h = read_outputs(hls.outputs()), r = read_outputs<Cfg>(rtl);
+    EXPECT_EQ(h, r);
+    rtl.clk_i = 0;
+    rtl.eval();
+    return r;
+  };
+  f.rst_n = false;
+  edge();
+  EXPECT_EQ(edge(), idle);
+  f.rst_n = true;
+  f.cmd_valid = true;
+  f.cmd = this->long_command(64, 3);
+  bool stepped = false;
+  for (int k = 0; k < 40; ++k) stepped = edge().step != 0 || stepped;
+  EXPECT_TRUE(stepped) << "the command never stepped: the reset below would prove nothing";
+  f.rst_n = false;
+  f.cmd_valid = false;
+  EXPECT_EQ(edge(), idle);
+  rtl.final();
+  Verilated::threadContextp(Verilated::defaultContextp());
+}
+
+// Commands offered back to back at a slow feed: the core pushes back
+// (cmd_ready_o low while a command waits) and takes every one, none dropped,
+// each completed with one done_o.
+TYPED_TEST(Conformance, BackpressureNeverDropsACommand) {
+  using A = typename TypeParam::Adapter;
+  Case<A> c = random_case<A>(this->l, 60, 21);
+  c.name = "back_to_back";
+  std::vector<Item<A>> commands;
+  for (const auto& it : c.items)
+    if (it.kind == Item<A>::Kind::kCommand) commands.push_back(it);
+  c.items = commands;
+  c.settings.feed = this->l.full_feed() / 3;
+  const auto r = run_direct<TypeParam>({c});
+  expect_all_pass(r);
+  EXPECT_EQ(r[0].commands, 60u);
+  EXPECT_GT(r[0].offer_wait_cycles, 100u) << "the stream never met backpressure";
+}
+
+// Seeded random streams: exact per-axis step counts (the model's), exact end
+// points, every move the model's, no timing violation, over 10^4 clocks.
+TYPED_TEST(Conformance, ExactCountsAndEndPointsOnRandomStreams) {
+  using A = typename TypeParam::Adapter;
+  uint64_t cycles = 0;
+  for (const uint64_t seed : {1u, 2u, 3u}) {
+    const Case<A> c = random_case<A>(this->l, 80, seed);
+    const auto r = run_direct<TypeParam>({c});
+    expect_all_pass(r);
+    EXPECT_EQ(r[0].steps, this->model_steps(c)) << "seed " << seed;
+    cycles += r[0].cycles;
+  }
+  EXPECT_GT(cycles, 10000u);
+  this->RecordProperty("cycles", std::to_string(cycles));
+}
+
+// The random streams change the timing settings while the core runs (long
+// settings among them); the monitors find nothing. A glitch on the observed
+// step_o proves they are watching this core's pins.
+TYPED_TEST(Conformance, MonitorsCleanUnderRandomTiming) {
+  using A = typename TypeParam::Adapter;
+  const Case<A> c = random_case<A>(this->l, 80, 5);
+  uint32_t longest = c.settings.timing.step_len;
+  for (const auto& it : c.items)
+    if (it.kind == Item<A>::Kind::kSettings)
+      longest = std::max({longest, it.settings.timing.step_len, it.settings.timing.step_space,
+                          it.settings.timing.dir_setup, it.settings.timing.dir_hold});
+  EXPECT_GE(longest, 5u) << "the stream never tried a long setting";
+  const auto clean = run_direct<TypeParam>({c});
+  expect_all_pass(clean);
+  EXPECT_EQ(clean[0].timing_violation_count, 0u);
+  ASSERT_GT(clean[0].first_step_cycle, 0u);
+  BenchOptions o;
+  o.faults.glitch_step_at = clean[0].first_step_cycle + 1;  // cuts the first pulse short
+  const auto glitched = run_direct<TypeParam>({c}, o);
+  EXPECT_GE(glitched[0].timing_violation_count, 1u);
+}
+
+// Abort: at random depths into random streams (each followed by a drain),
+// the position is a point of the reference path, no step starts on the
+// abort edge, busy_o falls within max(step_len, 1) - 1 clocks, the dropped
+// commands never step, and the commands after run exactly.
+TYPED_TEST(Conformance, AbortStopsOnThePathAndTheCoreGoesOn) {
+  using A = typename TypeParam::Adapter;
+  size_t aborts = 0, measured = 0;
+  for (const uint64_t seed : {11u, 12u}) {
+    const Case<A> c = random_case<A>(this->l, 80, seed, {true, false});
+    const auto r = run_direct<TypeParam>({c});
+    expect_all_pass(r);
+    for (const auto& a : r[0].aborts) {
+      EXPECT_TRUE(a.on_reference_path);
+      if (a.idle_after_clocks >= 0) {
+        ++measured;
+        EXPECT_LE(static_cast<uint64_t>(a.idle_after_clocks), a.idle_bound);
+      }
+    }
+    aborts += r[0].aborts.size();
+  }
+  EXPECT_GE(aborts, 5u);
+  EXPECT_GE(measured, 5u);
+}
+
+// --abort-at in the middle of one long command: one abort, on the path,
+// short of the command's end, measured idle within the bound.
+TYPED_TEST(Conformance, AbortAtACycleMidCommand) {
+  using A = typename TypeParam::Adapter;
+  const Case<A> c = this->one_command_case(this->long_command(200, 7));
+  const auto clean = run_direct<TypeParam>({c});
+  expect_all_pass(clean);
+  BenchOptions o;
+  o.abort_at = clean[0].first_step_cycle + (clean[0].cycles - clean[0].first_step_cycle) / 2;
+  const auto r = run_direct<TypeParam>({c}, o);
+  expect_all_pass(r);
+  ASSERT_EQ(r[0].aborts.size(), 1u);
+  const AbortRecord& a = r[0].aborts[0];
+  EXPECT_TRUE(a.on_reference_path);
+  EXPECT_NE(a.position, clean[0].end_position);
+  EXPECT_EQ(r[0].end_position, a.position);
+  ASSERT_GE(a.idle_after_clocks, 0);
+  EXPECT_LE(static_cast<uint64_t>(a.idle_after_clocks), a.idle_bound);
+  EXPECT_LT(r[0].cycles, clean[0].cycles);
+}
+
+// Feed hold: feed 0 in the middle of a move holds it (for at least the hold),
+// the feed back resumes it, and it ends exactly; random holds run clean.
+TYPED_TEST(Conformance, FeedHoldAndResumeEndsExactly) {
+  using A = typename TypeParam::Adapter;
+  Case<A> c = this->one_command_case(this->long_command(200, 9));
+  const auto clean = run_direct<TypeParam>({c});
+  expect_all_pass(clean);
+  RunSettings<A> hold = c.settings;
+  hold.feed = 0;
+  c.items.push_back(this->gap(clean[0].cycles / 2));
+  c.items.push_back(this->settings_item(hold));
+  c.items.push_back(this->gap(500));
+  c.items.push_back(this->settings_item(c.settings));
+  const auto held = run_direct<TypeParam>({c});
+  expect_all_pass(held);
+  EXPECT_EQ(held[0].steps, clean[0].steps);
+  EXPECT_GE(held[0].cycles, clean[0].cycles + 495);
+  expect_all_pass(run_direct<TypeParam>({random_case<A>(this->l, 60, 13, {false, true})}));
+}
+
+// The comparator fails at the injected cycle, naming the signal.
+TYPED_TEST(Conformance, InjectedMismatchIsCaughtAtItsCycle) {
+  using A = typename TypeParam::Adapter;
+  BenchOptions o;
+  o.faults.flip_hls_step_at = 77;
+  const auto r = run_direct<TypeParam>({random_case<A>(this->l, 20, 9)}, o);
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_FALSE(r[0].passed());
+  ASSERT_TRUE(r[0].first_mismatch.has_value());
+  EXPECT_EQ(r[0].first_mismatch->cycle, 77u);
+  EXPECT_EQ(r[0].first_mismatch->signal, "step_o[0]");
+  EXPECT_EQ(r[0].cycles, 77u);
+}
+
+// Through the command line: the printed replay command reproduces the
+// failure (same cycle, same signal) and writes the trace window.
+TYPED_TEST(Conformance, PrintedReplayCommandReproducesTheMismatch) {
+  using hwinterp::testing::run_hwinterp;
+  using hwinterp::testing::scratch_dir;
+  const std::string dir = scratch_dir(std::string("replay_") + TypeParam::Cfg::kVariant);
+  const std::string base = std::string("cosim --core ") + TypeParam::Cfg::kCore + " --variant " +
+                           TypeParam::Cfg::kVariant + " --random 20 --seed 9 --mode direct";
+  const auto first = run_hwinterp(base + " --inject mismatch@77 --json " + dir + "/a.json");
+  ASSERT_EQ(first.code, 1) << first.out << first.err;
+  const Json a = Json::parse(hwinterp::testing::slurp(dir + "/a.json"));
+  ASSERT_TRUE(a.contains("replay"));
+  std::string replay = a["replay"].get<std::string>();
+  ASSERT_EQ(replay.rfind("hwinterp cosim ", 0), 0u) << replay;
+  const std::string vcd = "--vcd mismatch.vcd";
+  ASSERT_NE(replay.find(vcd), std::string::npos) << replay;
+  replay.replace(replay.find(vcd), vcd.size(), "--vcd " + dir + "/m.vcd");
+  const auto again = run_hwinterp(replay.substr(9) + " --json " + dir + "/b.json");
+  ASSERT_EQ(again.code, 1) << again.out << again.err;
+  const Json b = Json::parse(hwinterp::testing::slurp(dir + "/b.json"));
+  EXPECT_EQ(b["first_mismatch"], a["first_mismatch"]);
+  EXPECT_EQ(b["first_mismatch"]["cycle"], 77);
+  EXPECT_NE(hwinterp::testing::slurp(dir + "/m.vcd").find("\n#770\n"), std::string::npos);
+}
+
+// The SystemC mode is the same machine: one stimulus, identical cycles,
+// steps, end points and errors. Elaborates SystemC (own process).
+TYPED_TEST(Conformance, SystemcMatchesDirect) {
+  using A = typename TypeParam::Adapter;
+  std::vector<Case<A>> cases = A::regression_cases(this->l, 60, 42);
+  const auto direct = run_direct<TypeParam>(cases);
+  const auto sc = run_systemc<TypeParam>(cases);
+  expect_all_pass(sc);
+  ASSERT_EQ(direct.size(), sc.size());
+  for (size_t i = 0; i < direct.size(); ++i) {
+    EXPECT_EQ(direct[i].cycles, sc[i].cycles) << direct[i].name;
+    EXPECT_EQ(direct[i].steps, sc[i].steps) << direct[i].name;
+    EXPECT_EQ(direct[i].end_position, sc[i].end_position) << direct[i].name;
+    EXPECT_DOUBLE_EQ(direct[i].max_path_error_steps, sc[i].max_path_error_steps) << direct[i].name;
+  }
+}
+
+// The SystemC-mode comparator fails at the injected cycle too.
+TYPED_TEST(Conformance, SystemcInjectedMismatchIsCaught) {
+  using A = typename TypeParam::Adapter;
+  BenchOptions o;
+  o.faults.flip_hls_step_at = 123;
+  const auto r = run_systemc<TypeParam>({random_case<A>(this->l, 20, 5)}, o);
+  ASSERT_EQ(r.size(), 1u);
+  ASSERT_TRUE(r[0].first_mismatch.has_value());
+  EXPECT_EQ(r[0].first_mismatch->cycle, 123u);
+  EXPECT_FALSE(r[0].passed());
+}
+
+}  // namespace
+}  // namespace hwinterp::tb::testing
