@@ -3,7 +3,7 @@
 #   direct   hwinterp cosim --mode direct  (HLS tick() + verilator --cc, every check)
 #   systemc  hwinterp cosim --mode systemc (SC_MODULE + verilator --sc, every check)
 #   icarus   Icarus Verilog running rtl/dda_line.sv alone, replaying the very
-#            same input frames (tb/verilog/dda_line_replay_tb.sv)
+#            same input frames (the replay testbench `--dump-frames` writes)
 # Each is timed best-of-R (wall clock, whole process); Icarus's cycle count,
 # steps, positions and done pulses are checked against the co-simulation, so
 # all three provably ran the same workload. Ratios are against Icarus.
@@ -31,10 +31,7 @@ for tool in iverilog vvp /usr/bin/python3; do
   command -v "$tool" >/dev/null || { echo "bench_speed.sh: $tool not found (scripts/setup.sh installs it)" >&2; exit 2; }
 done
 
-stim=(--core dda_line --axes 4 --random "$commands" --seed "$seed")
-# Variant parameters from the single configuration source.
-params=$(awk '$1 == "dda_line_n4" { $1 = ""; $2 = ""; print }' "$build/generated/variants.txt")
-[ -n "$params" ] || { echo "bench_speed.sh: dda_line_n4 not in $build/generated/variants.txt" >&2; exit 2; }
+stim=(--core dda_line --variant dda_line_n4 --random "$commands" --seed "$seed")
 
 echo "bench_speed: dda_line_n4, random stream of $commands commands, seed $seed, best of $repeat"
 "$hw" cosim "${stim[@]}" --mode direct --dump-frames "$out/frames.hex" --json "$out/reference.json" >"$out/reference.log"
@@ -55,10 +52,9 @@ best_of() {
 
 t_direct=$(best_of direct "$hw" cosim "${stim[@]}" --mode direct --json "$out/direct.json")
 t_systemc=$(best_of systemc "$hw" cosim "${stim[@]}" --mode systemc --json "$out/systemc.json")
-pflags=()
-for kv in $params; do pflags+=(-P "dda_line_replay_tb.$kv"); done
-t_compile=$(best_of icarus_compile iverilog -g2012 -o "$out/replay.vvp" -s dda_line_replay_tb \
-  "${pflags[@]}" "$root/tb/verilog/dda_line_replay_tb.sv" "$root/rtl/stepdir_axis.sv" "$root/rtl/dda_line.sv")
+mapfile -t rtl < <(sed "s|^|$root/rtl/|" "$root/rtl/dda_line.f")
+t_compile=$(best_of icarus_compile iverilog -g2012 -o "$out/replay.vvp" -s replay_tb \
+  "$out/frames.hex.sv" "${rtl[@]}")
 t_icarus=$(best_of icarus vvp -n "$out/replay.vvp" +frames="$out/frames.hex")
 
 /usr/bin/python3 - "$out" "$t_direct" "$t_systemc" "$t_icarus" "$t_compile" <<'PY'

@@ -88,7 +88,7 @@ class Bench {
         throw std::runtime_error("cannot write path CSV '" + options_.path_csv + "'");
       *path_csv_ << "case,cycle,kind";
       for (int i = 0; i < limits_.axes; ++i) *path_csv_ << ",p" << i;
-      *path_csv_ << "\n";
+      *path_csv_ << ",error,bound\n";
     }
     if (cases_.empty())
       finished_ = true;
@@ -147,7 +147,7 @@ class Bench {
                                                   r.timing_violation_count);
       const bool moved = scoreboard_->observe(cycle_, seen, r);
       if (moved) {
-        if (path_csv_) path_row("move", scoreboard_->position());
+        if (path_csv_) path_row("move", scoreboard_->position(), scoreboard_->last_error());
         if (options_.record_path) r.visited.push_back(scoreboard_->position());
       }
       if (frame_.abort) abort_edge(moved, r);
@@ -283,6 +283,7 @@ class Bench {
             scoreboard_->command_taken(it.cmd, settings_.setup);
             ++results_.back().commands;
             ++item_;
+            if (path_csv_) ideal_rows(it.cmd);
             A::apply(it.cmd, path_target_);
             path_row("target", path_target_);
           } else {
@@ -365,11 +366,24 @@ class Bench {
                  static_cast<unsigned long long>(r.commands_offered));
   }
 
-  void path_row(const char* kind, const models::LatticePoint& p) {
+  // A row of the path CSV: kind start, target or move (with the move's
+  // deviation from the ideal path and the bound), or ideal (a vertex of a
+  // command's ideal path).
+  template <class Point>
+  void path_row(const char* kind, const Point& p, double error = -1) {
     if (!path_csv_) return;
     *path_csv_ << cases_[case_index_].name << ',' << cycle_ - case_start_cycle_ << ',' << kind;
-    for (const int64_t v : p) *path_csv_ << ',' << v;
+    for (const auto v : p) *path_csv_ << ',' << v;
+    *path_csv_ << ',';
+    if (error >= 0)
+      *path_csv_ << error << ',' << results_.back().error_bound;
+    else
+      *path_csv_ << ',';
     *path_csv_ << '\n';
+  }
+  void ideal_rows(const typename A::Command& cmd) {
+    const typename A::Reference ref(path_target_, cmd, settings_.setup, limits_);
+    for (const auto& p : ref.ideal()) path_row("ideal", p);
   }
 
   CoreLimits limits_;

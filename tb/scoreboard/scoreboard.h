@@ -13,6 +13,7 @@
 //   bool next(Move&)                      the next move; false when none is left
 //   double error(const LatticePoint&)     deviation of a visited point from the ideal path
 //   models::ErrorBound bound()            the bound the error is checked against
+//   std::vector<std::vector<double>> ideal()   the ideal path as a polyline (plots)
 // (a copyable value: the scoreboard probes copies).
 #pragma once
 
@@ -147,6 +148,8 @@ class Scoreboard {
   // commands taken so far lead (for a report cut short by a mismatch).
   const models::LatticePoint& position() const { return at_; }
   const models::LatticePoint& expected_end() const { return expected_end_; }
+  // Deviation of the last move's point from its command's ideal path.
+  double last_error() const { return last_error_; }
 
  private:
   struct Command {
@@ -196,6 +199,7 @@ class Scoreboard {
 
   void check_path_error(uint64_t cycle, CaseResult& r) {
     const double e = stream_->error(at_);
+    last_error_ = e;
     const models::ErrorBound bound = stream_->bound();
     if (e > r.max_path_error_steps) r.max_path_error_steps = e;
     if (bound.value > r.error_bound) {
@@ -218,6 +222,7 @@ class Scoreboard {
   std::optional<Reference> stream_;  // moves of taken_[current_]
   uint64_t done_count_ = 0;
   uint32_t prev_step_ = 0;
+  double last_error_ = 0;
   bool diverged_ = false;      // after a wrong move the rest of the sequence is not compared
   bool pos_reported_ = false;  // one pos_o report per case, not one per cycle
 };

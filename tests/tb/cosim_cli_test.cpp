@@ -103,8 +103,8 @@ TEST(CosimCli, FstTraceIsWritten) {
   EXPECT_GT(f.tellg(), 100);
 }
 
-// --path-csv: the case start, each command's target and one row per move,
-// consistent with the steps the report counts.
+// --path-csv: the case start, each command's ideal path and target, and one
+// row per move with its deviation and bound, consistent with the report.
 TEST(CosimCli, PathCsvHasStartTargetAndEveryMove) {
   const std::string csv = scratch_dir("cosim_path") + "/p.csv";
   const CliResult r = run_hwinterp(
@@ -115,20 +115,22 @@ TEST(CosimCli, PathCsvHasStartTargetAndEveryMove) {
   std::ifstream f(csv);
   std::string line;
   std::getline(f, line);
-  EXPECT_EQ(line, "case,cycle,kind,p0,p1");
-  int starts = 0, targets = 0, moves = 0;
+  EXPECT_EQ(line, "case,cycle,kind,p0,p1,error,bound");
+  int starts = 0, ideal = 0, targets = 0, moves = 0;
   std::string last;
   while (std::getline(f, line)) {
-    starts += line.find(",start,") != std::string::npos;
-    targets += line.find(",target,40,20") != std::string::npos;
+    starts += line.find(",start,10,10,,") != std::string::npos;
+    ideal += line.find(",ideal,") != std::string::npos;
+    targets += line.find(",target,40,20,,") != std::string::npos;
     moves += line.find(",move,") != std::string::npos;
     last = line;
   }
   EXPECT_EQ(starts, 1);
+  EXPECT_EQ(ideal, 2);  // a line: its two ends
   EXPECT_EQ(targets, 1);
   EXPECT_GE(moves, 30);  // 30 x-steps, 10 y-steps, some together
   EXPECT_LE(moves, 40);
-  EXPECT_NE(last.find(",move,40,20"), std::string::npos) << last;
+  EXPECT_NE(last.find(",move,40,20,0,"), std::string::npos) << last;  // on the line: 0
 }
 
 // --dump-frames writes the frames and a replay testbench for the variant;

@@ -92,6 +92,10 @@ struct Adapter {
     bool next(Move& m);
     double error(const models::LatticePoint& p) const;
     models::ErrorBound bound() const { return bound_; }
+    // The ideal path as a polyline (for plots): the line itself.
+    std::vector<std::vector<double>> ideal() const {
+      return {{start_.begin(), start_.end()}, {end_.begin(), end_.end()}};
+    }
 
    private:
     models::DdaMoveStream stream_;
