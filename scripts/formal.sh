@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
-# Formal check of rtl/stepdir_axis.sv against rtl/formal/stepdir_axis_props.sv
-# (the step/dir timing promises of its header): a bounded model check and a
-# k-induction proof, with Yosys (read_verilog -formal) and yosys-smtbmc + z3.
+# Formal check of the output stage every core shares: rtl/stepdir_axis.sv
+# against rtl/formal/stepdir_axis_props.sv (the step/dir timing promises of
+# its header) and rtl/step_stage.sv against rtl/formal/step_stage_props.sv
+# (positions are the integral of the step/dir wires): a bounded model check
+# and a k-induction proof each, with Yosys (read_verilog -formal) and
+# yosys-smtbmc + z3.
 #
 # Usage: scripts/formal.sh [--depth N] [--tim-w "W..."] [--out DIR]
 #   --depth N     BMC depth and maximum induction length (default 30)
@@ -46,12 +49,17 @@ done
 
 out=${out:-$build/reports/formal}
 mkdir -p "$out"
-rtl=$root/rtl/stepdir_axis.sv
-props=$root/rtl/formal/stepdir_axis_props.sv
+# Each block: its RTL files (dependencies first).
+declare -A block_files=(
+  [stepdir_axis]="$root/rtl/stepdir_axis.sv"
+  [step_stage]="$root/rtl/stepdir_axis.sv $root/rtl/step_stage.sv"
+)
+blocks=(stepdir_axis step_stage)
 
 # Yosys 0.23 silently misreads some SystemVerilog literals; a proof about the
 # misread design would prove nothing about the RTL.
-python3 "$root/scripts/synth/yosys_compat.py" "$rtl" "$props" 2>"$out/compat_check.log" ||
+python3 "$root/scripts/synth/yosys_compat.py" "$root/rtl/stepdir_axis.sv" "$root/rtl/step_stage.sv" \
+  "$root"/rtl/formal/*_props.sv 2>"$out/compat_check.log" ||
   die "Yosys 0.23 would misread the RTL; see $out/compat_check.log"
 
 # run LOG CMD...: runs CMD into LOG, prints the verdict line, fails by name.
@@ -72,31 +80,35 @@ run() {
 
 jobs=${HWINTERP_JOBS:-2}
 status=0
-for w in "${width_list[@]}"; do
-  smt=$out/stepdir_axis_w$w.smt2
-  # prep, then async2sync (the asynchronous reset as logic on the flip-flop
-  # outputs, which smtbmc can step) and dffunmap (plain $dff for write_smt2).
-  yosys -q -l "$out/prep_w$w.log" -p "read_verilog -sv -formal $rtl $props;
-    chparam -set TIM_W $w stepdir_axis_props; prep -top stepdir_axis_props;
-    async2sync; dffunmap; write_smt2 -wires $smt" >/dev/null 2>&1 ||
-    die "step 'yosys prep' failed for TIM_W=$w; see $out/prep_w$w.log"
-  # --unroll: with the default encoding, z3 4.8.12 spends ~80 s on the very
-  # first query (measured: `-t 1` alone took 81 s); unrolled, BMC to depth 30
-  # takes ~30 s and induction ~2 s, and the same mutants fail.
-  bmc=(run "$out/bmc_w${w}_d$depth.log" yosys-smtbmc -s z3 --unroll -t "$depth"
-    --dump-vcd "$out/bmc_w${w}_d$depth.vcd" "$smt")
-  ind=(run "$out/induction_w${w}_d$depth.log" yosys-smtbmc -s z3 --unroll -i -t "$depth" "$smt")
-  if [ "$jobs" -ge 2 ]; then
-    "${bmc[@]}" &
-    p1=$!
-    "${ind[@]}" &
-    p2=$!
-    wait "$p1" || status=1
-    wait "$p2" || status=1
-  else
-    "${bmc[@]}" || status=1
-    "${ind[@]}" || status=1
-  fi
+for block in "${blocks[@]}"; do
+  props=$root/rtl/formal/${block}_props.sv
+  for w in "${width_list[@]}"; do
+    smt=$out/${block}_w$w.smt2
+    # prep, then async2sync (the asynchronous reset as logic on the flip-flop
+    # outputs, which smtbmc can step) and dffunmap (plain $dff for write_smt2).
+    yosys -q -l "$out/prep_${block}_w$w.log" -p "read_verilog -sv -formal ${block_files[$block]} $props;
+      chparam -set TIM_W $w ${block}_props; prep -top ${block}_props;
+      async2sync; dffunmap; write_smt2 -wires $smt" >/dev/null 2>&1 ||
+      die "step 'yosys prep' failed for $block TIM_W=$w; see $out/prep_${block}_w$w.log"
+    # --unroll: with the default encoding, z3 4.8.12 spends ~80 s on the very
+    # first query (measured: `-t 1` alone took 81 s); unrolled, BMC to depth 30
+    # takes ~30 s and induction ~2 s, and the same mutants fail.
+    bmc=(run "$out/bmc_${block}_w${w}_d$depth.log" yosys-smtbmc -s z3 --unroll -t "$depth"
+      --dump-vcd "$out/bmc_${block}_w${w}_d$depth.vcd" "$smt")
+    ind=(run "$out/induction_${block}_w${w}_d$depth.log" yosys-smtbmc -s z3 --unroll -i -t "$depth"
+      "$smt")
+    if [ "$jobs" -ge 2 ]; then
+      "${bmc[@]}" &
+      p1=$!
+      "${ind[@]}" &
+      p2=$!
+      wait "$p1" || status=1
+      wait "$p2" || status=1
+    else
+      "${bmc[@]}" || status=1
+      "${ind[@]}" || status=1
+    fi
+  done
 done
 [ $status -eq 0 ] || die "a property failed or a run did not finish; logs in $out"
-echo "formal: all properties hold (BMC depth $depth and induction, TIM_W ${width_list[*]}); logs in $out"
+echo "formal: all properties of ${blocks[*]} hold (BMC depth $depth and induction, TIM_W ${width_list[*]}); logs in $out"
