@@ -1,6 +1,7 @@
 #include "tb/lockstep/registry.h"
 
 #include <random>
+#include <sstream>
 
 #include "hwinterp_core_adapters.h"
 #include "hwinterp_variants.h"
@@ -82,6 +83,10 @@ VariantEntry make_variant() {
       cases = A::cases_from_options(args, l, settings);
     }
     return make_run<A, Cfg>(l, std::move(cases), options);
+  };
+  v.from_job = [l = v.limits](const std::string& job, const BenchOptions& options) {
+    std::istringstream in(job);
+    return make_run<A, Cfg>(l, parse_job<A>(in, "job", l, default_settings<A>(l)), options);
   };
   v.regression = [l = v.limits](uint64_t commands, uint64_t seed, const BenchOptions& options) {
     return make_run<A, Cfg>(l, A::regression_cases(l, commands, seed), options);

@@ -51,6 +51,9 @@ struct VariantEntry {
   // core's own sources; settings from --feed, the timing flags and the
   // core's own. Validated; throws cli::UsageError naming the bad value.
   std::function<std::unique_ptr<BenchRun>(const cli::Args&, const BenchOptions&)> from_args;
+  // A job given as text (the job-file format), default settings: how code
+  // that knows a core only by name (the paper reproductions) runs it.
+  std::function<std::unique_ptr<BenchRun>(const std::string& job, const BenchOptions&)> from_job;
   // The core's regression cases with a random stream of `commands`.
   std::function<std::unique_ptr<BenchRun>(uint64_t commands, uint64_t seed, const BenchOptions&)>
       regression;

@@ -249,12 +249,11 @@ class JobLine {
 // `move`, `arc`, and setups such as `preload`). Settings written before the
 // first command of a case are in force from reset. Throws cli::UsageError
 // naming file:line and the bad value.
+// `path` names the job in messages.
 template <class A>
-std::vector<Case<A>> parse_job(const std::string& path, const CoreLimits& limits,
+std::vector<Case<A>> parse_job(std::istream& in, const std::string& path, const CoreLimits& limits,
                                const RunSettings<A>& defaults) {
   using Kind = typename Item<A>::Kind;
-  std::ifstream in(path);
-  if (!in) throw cli::UsageError("--job: cannot read '" + path + "'");
   std::vector<Case<A>> cases;
   models::LatticePoint at;
   auto new_case = [&](const std::string& name) {
@@ -327,6 +326,15 @@ std::vector<Case<A>> parse_job(const std::string& path, const CoreLimits& limits
     if (command_count(k) == 0)
       throw cli::UsageError("--job: case '" + k.name + "' has no commands");
   return cases;
+}
+
+// A job file.
+template <class A>
+std::vector<Case<A>> parse_job(const std::string& path, const CoreLimits& limits,
+                               const RunSettings<A>& defaults) {
+  std::ifstream in(path);
+  if (!in) throw cli::UsageError("--job: cannot read '" + path + "'");
+  return parse_job<A>(in, path, limits, defaults);
 }
 
 }  // namespace hwinterp::tb
