@@ -12,17 +12,22 @@ namespace {
 
 int sign_of(int64_t v) { return v > 0 ? 1 : (v < 0 ? -1 : 0); }
 
-// The streams square coordinates in int64: |v| < 2^30 keeps every product
-// (and a sum of two) far inside 63 bits.
-constexpr int64_t kStreamLimit = int64_t{1} << 30;
+// The arc stream squares coordinates in int64: |v| < 2^30 keeps every
+// product (and a sum of two) far inside 63 bits. The line stream only adds
+// magnitudes: |v| < 2^61 keeps F and the differences inside 63 bits.
+constexpr int kArcLimitBits = 30;
+constexpr int kLineLimitBits = 61;
 
-void check_stream_point(const LatticePoint& p, const char* who, const char* what) {
+void check_stream_point(const LatticePoint& p, const char* who, const char* what,
+                        int limit_bits = kArcLimitBits) {
   if (p.size() != 2)
     throw std::invalid_argument(std::string(who) + ": " + what + " must have 2 axes");
+  const int64_t limit = int64_t{1} << limit_bits;
   for (const int64_t v : p)
-    if (v >= kStreamLimit || v <= -kStreamLimit)
+    if (v >= limit || v <= -limit)
       throw std::invalid_argument(std::string(who) + ": " + what + " coordinate " +
-                                  std::to_string(v) + " is beyond 2^30 steps");
+                                  std::to_string(v) + " is beyond 2^" + std::to_string(limit_bits) +
+                                  " steps");
 }
 
 // Quadrant and motion of a point relative to the centre. A point on an axis
@@ -64,8 +69,8 @@ int64_t ceil_sqrt(int64_t v) {
 
 PpcLineStream::PpcLineStream(const LatticePoint& start, const LatticePoint& end, PpcLineRule rule)
     : rule_(rule), at_(start) {
-  check_stream_point(start, "ppc_line", "start");
-  check_stream_point(end, "ppc_line", "end");
+  check_stream_point(start, "ppc_line", "start", kLineLimitBits);
+  check_stream_point(end, "ppc_line", "end", kLineLimitBits);
   const int64_t dx = end[0] - start[0], dy = end[1] - start[1];
   ax_ = std::llabs(dx);
   ay_ = std::llabs(dy);

@@ -11,9 +11,9 @@
 //
 // The streams (PpcLineStream, PpcArcStream) yield one move at a time, for
 // the testbench scoreboard, which must not store whole paths; the StepPath
-// functions collect them. The streams take any int64 coordinates whose
-// squares fit (|coordinate| < 2^30); the StepPath functions keep their
-// storage limits (check_line_2d, kMaxStepMoves).
+// functions collect them. The arc stream takes coordinates whose squares fit
+// (|coordinate| < 2^30), the line stream |coordinate| < 2^61; the StepPath
+// functions keep their storage limits (check_line_2d, kMaxStepMoves).
 #pragma once
 
 #include <cmath>
