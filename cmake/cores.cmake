@@ -18,4 +18,8 @@ hwinterp_core_variant(CORE ppc_line NAME ppc_line_a32
   PARAMS AXES=2 ACC_W=32 POS_W=32 TIM_W=16 FEED_W=16 DEFAULTS ${ppc_timing})
 hwinterp_core_variant(CORE ppc_line NAME ppc_line_edge
   PARAMS AXES=2 ACC_W=11 POS_W=13 TIM_W=5 FEED_W=5 DEFAULTS ${ppc_timing})
+hwinterp_core_variant(CORE ppc_arc NAME ppc_arc_c24
+  PARAMS AXES=2 COORD_W=24 POS_W=32 TIM_W=16 FEED_W=16 DEFAULTS ${ppc_timing})
+hwinterp_core_variant(CORE ppc_arc NAME ppc_arc_edge
+  PARAMS AXES=2 COORD_W=9 POS_W=13 TIM_W=5 FEED_W=5 DEFAULTS ${ppc_timing})
 hwinterp_finish_variants()
