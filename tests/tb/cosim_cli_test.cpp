@@ -145,12 +145,12 @@ TEST(CosimCli, HelpListsTheContract) {
 
 TEST(RegressCli, SmallRegressionPassesAndReports) {
   const std::string json = scratch_dir("regress") + "/r.json";
-  const CliResult r = run_hwinterp("regress --random 10 --seed 4 --json " + json);
+  const CliResult r = run_hwinterp("regress --cores dda_line --random 10 --seed 4 --json " + json);
   ASSERT_EQ(r.code, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("PASS"), std::string::npos);
   const std::string j = slurp(json);
   EXPECT_NE(j.find("\"passed\": true"), std::string::npos);
-  // Every variant in both modes: 4 runs, each with the 16 paper-line cases
+  // Every dda_line variant in both modes: 4 runs, each with the 16 paper-line cases
   // (plain and half preload) and the random stream.
   auto count = [&](const std::string& needle) {
     size_t n = 0;
