@@ -71,11 +71,11 @@ module ppc_arc #(
   parameter int TIM_W   = 16,  // width of the step/dir timing settings and counters
   parameter int FEED_W  = 16   // feed phase width; feed_i = 2^FEED_W is full feed
 ) (
-  input  logic                    clk_i,
+  input  logic                    clk_i,         // clock
   input  logic                    rst_ni,        // asynchronous, active low
   // Command stream
-  input  logic                    cmd_valid_i,
-  output logic                    cmd_ready_o,
+  input  logic                    cmd_valid_i,   // a command is offered on cmd_*_i
+  output logic                    cmd_ready_o,   // the buffer is free: an offered command is taken
   input  logic [AXES*COORD_W-1:0] cmd_center_i,  // centre - start: I at [0 +: COORD_W], J above
   input  logic [AXES*COORD_W-1:0] cmd_end_i,     // end - start: x at [0 +: COORD_W], y above
   input  logic                    cmd_ccw_i,     // 1: counter-clockwise, 0: clockwise

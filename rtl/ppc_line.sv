@@ -43,11 +43,11 @@ module ppc_line #(
   parameter int TIM_W  = 16,  // width of the step/dir timing settings and counters
   parameter int FEED_W = 16   // feed phase width; feed_i = 2^FEED_W is full feed
 ) (
-  input  logic                  clk_i,
+  input  logic                  clk_i,         // clock
   input  logic                  rst_ni,        // asynchronous, active low
   // Command stream
-  input  logic                  cmd_valid_i,
-  output logic                  cmd_ready_o,
+  input  logic                  cmd_valid_i,   // a command is offered on cmd_*_i
+  output logic                  cmd_ready_o,   // the buffer is free: an offered command is taken
   input  logic [AXES*ACC_W-1:0] cmd_delta_i,   // dx at [0 +: ACC_W], dy at [ACC_W +: ACC_W]
   // Run-time settings
   input  logic [FEED_W:0]       feed_i,        // operations per clock = feed_i / 2^FEED_W

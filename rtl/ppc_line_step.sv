@@ -17,7 +17,7 @@
 module ppc_line_step #(
   parameter int MAG_W = 32  // width of the magnitudes |dx|, |dy| (unsigned)
 ) (
-  input  logic             clk_i,
+  input  logic             clk_i,      // clock
   input  logic             rst_ni,     // asynchronous, active low
   input  logic             load_i,     // start a line: |dx| = load_ax_i, |dy| = load_ay_i, F = 0
   input  logic [MAG_W-1:0] load_ax_i,  // |dx|
