@@ -97,13 +97,21 @@ double ppc_line_error_bound(const LatticePoint& start, const LatticePoint& end);
 // Degenerate commands: R^2 < 2 (start within one step of the centre) or
 // e == c (an arc into its centre): no arc phase, the closing line from s.
 //
-// On-circle ends (|e| = |s|): the arc phase never ends early and there is no
-// closing phase: the PPC arc visits every lattice point of its circle in
-// order (it is monotone on both axes within a quadrant and never steps an
-// axis past the next lattice point of the circle: checked exhaustively in
-// tests/models/ppc_test.cpp), so a final-pass step never finds its axis at or
-// past e before it lands on e. The moves are the plain PPC arc's, run until
-// it first reaches e in the final pass (the paper arc: 8 steps).
+// On-circle ends (|e| = |s|): the arc phase lands on e, with no closing
+// phase; the moves are the plain PPC arc's, run until it first reaches e in
+// the final pass (the paper arc: 8 steps). Why, in quadrant I CCW (the others
+// are mirror images): in the final pass x only falls and y only rises, and
+// both start short of e. If x reaches e_x first, at (e_x, y) with y < e_y,
+// then F = y^2 - e_y^2 < 0 there and at every point up to e, so the arc steps
+// y (still short) until it lands on e; if y reaches e_y first, F = x^2 - e_x^2
+// > 0 and x steps until e. (An end on the next axis, e_x = 0, is landed on by
+// the entry step out of quadrant I: the step onto x = 0 needs F(1, y) >= 0,
+// i.e. y >= e_y, so y gets there first.) So no final-pass step finds its axis
+// at or past e. That the final pass does start short of e (every lattice point of
+// the circle is visited, across axis crossings too) is checked exhaustively:
+// tests/models/ppc_test.cpp PpcRuleM.OnCircleArcsUnchanged (every start with
+// |s| <= 12, every end on its circle, both directions: the old run-until-end
+// PPC path, operations == moves).
 //
 // Error metric (ppc_arc_spiral_error): the ideal path is the spiral about c
 // from s to e, r(phi) = rs + (re - rs) min(phi, theta) / theta, rs = |s|,
