@@ -15,7 +15,6 @@
 #include "models/ppc.h"
 #include "ppc_lockstep_helpers.h"
 #include "tb/cores/ppc_arc/ppc_arc_adapter.h"
-#include "tb/lockstep/registry.h"
 
 namespace hwinterp::tb {
 namespace {
@@ -312,29 +311,7 @@ TEST(PpcArcJob, ArcDirective) {
   EXPECT_THROW(parse_job<A>(path, l, default_settings<A>(l)), cli::UsageError);
 }
 
-// The registry's regression cases in both lockstep modes (SystemC: every
-// variant in one elaboration).
-TEST(PpcArcRegistry, RegressionBothModes) {
-  const CoreEntry& core = find_core("ppc_arc");
-  ASSERT_EQ(core.variants.size(), 2u);
-  std::vector<std::unique_ptr<BenchRun>> runs;
-  std::vector<BenchRun*> sc;
-  for (const auto& v : core.variants) {
-    BenchOptions o;
-    o.mode = "direct";
-    runs.push_back(v.regression(60, 5, o));
-    runs.back()->run_direct();
-    o.mode = "systemc";
-    runs.push_back(v.regression(60, 5, o));
-    sc.push_back(runs.back().get());
-  }
-  run_systemc(sc);
-  for (size_t k = 0; k < runs.size(); ++k) {
-    ASSERT_TRUE(runs[k]->finished());
-    expect_all_passed(runs[k]->results(), 5);
-    if (k % 2) EXPECT_EQ(runs[k]->cycles(), runs[k - 1]->cycles());  // modes agree
-  }
-}
+TEST(PpcArcRegistry, RegressionBothModes) { ppc_testing::regression_both_modes("ppc_arc", 2, 5); }
 
 }  // namespace
 }  // namespace hwinterp::tb

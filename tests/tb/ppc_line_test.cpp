@@ -13,7 +13,6 @@
 #include "models/ppc.h"
 #include "ppc_lockstep_helpers.h"
 #include "tb/cores/ppc_line/ppc_line_adapter.h"
-#include "tb/lockstep/registry.h"
 
 namespace hwinterp::tb {
 namespace {
@@ -211,28 +210,8 @@ TEST(PpcLineJob, LineAndMoveDirectives) {
   EXPECT_NO_THROW(A::validate({{-1024, 1023}}, {0, 0}, l, "x"));
 }
 
-// The registry's regression cases in both lockstep modes (SystemC: every
-// variant in one elaboration).
 TEST(PpcLineRegistry, RegressionBothModes) {
-  const CoreEntry& core = find_core("ppc_line");
-  ASSERT_EQ(core.variants.size(), 2u);
-  std::vector<std::unique_ptr<BenchRun>> runs;
-  std::vector<BenchRun*> sc;
-  for (const auto& v : core.variants) {
-    BenchOptions o;
-    o.mode = "direct";
-    runs.push_back(v.regression(60, 5, o));
-    runs.back()->run_direct();
-    o.mode = "systemc";
-    runs.push_back(v.regression(60, 5, o));
-    sc.push_back(runs.back().get());
-  }
-  run_systemc(sc);
-  for (size_t k = 0; k < runs.size(); ++k) {
-    ASSERT_TRUE(runs[k]->finished());
-    expect_all_passed(runs[k]->results(), 11);
-    if (k % 2) EXPECT_EQ(runs[k]->cycles(), runs[k - 1]->cycles());  // modes agree
-  }
+  ppc_testing::regression_both_modes("ppc_line", 2, 11);
 }
 
 }  // namespace

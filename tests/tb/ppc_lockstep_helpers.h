@@ -5,12 +5,14 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "hls/stepper_io.h"  // before direct.h, which uses it without including it
 #include "hwinterp_variants.h"
 #include "tb/lockstep/direct.h"
+#include "tb/lockstep/registry.h"
 #include "tb/stimulus/stimulus.h"
 
 namespace hwinterp::tb::ppc_testing {
@@ -58,6 +60,31 @@ RunSettings<A> half_feed_unit_timing(const CoreLimits& l) {
   s.feed = l.full_feed() / 2;
   s.timing = {1, 1, 1, 1};
   return s;
+}
+
+// The registry's regression cases of `core` (a random stream of 60 commands,
+// seed 5) on every variant in both lockstep modes (SystemC: every variant in
+// one elaboration): all `cases` pass, and both modes run the same clocks.
+inline void regression_both_modes(const std::string& core, size_t variants, size_t cases) {
+  const CoreEntry& entry = find_core(core);
+  ASSERT_EQ(entry.variants.size(), variants);
+  std::vector<std::unique_ptr<BenchRun>> runs;
+  std::vector<BenchRun*> sc;
+  for (const auto& v : entry.variants) {
+    BenchOptions o;
+    o.mode = "direct";
+    runs.push_back(v.regression(60, 5, o));
+    runs.back()->run_direct();
+    o.mode = "systemc";
+    runs.push_back(v.regression(60, 5, o));
+    sc.push_back(runs.back().get());
+  }
+  run_systemc(sc);
+  for (size_t k = 0; k < runs.size(); ++k) {
+    ASSERT_TRUE(runs[k]->finished());
+    expect_all_passed(runs[k]->results(), cases);
+    if (k % 2) EXPECT_EQ(runs[k]->cycles(), runs[k - 1]->cycles());  // modes agree
+  }
 }
 
 }  // namespace hwinterp::tb::ppc_testing
