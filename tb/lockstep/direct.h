@@ -7,6 +7,7 @@
 
 #include <verilated.h>
 
+#include "hls/stepper_io.h"
 #include "hwinterp_variants.h"
 #include "tb/lockstep/bench.h"
 #include "tb/lockstep/rtl_pins.h"

@@ -5,8 +5,10 @@
 //   A::Command random_command(Rng&, const CoreLimits&, const LatticePoint& at,
 //                             const A::Command& previous)
 //   void apply(const A::Command&, LatticePoint& at)      where the command ends
-//   void validate(const A::Command&, const LatticePoint& at, const CoreLimits&,
+//   void validate(const A::Command&, const LatticePoint& from, const CoreLimits&,
 //                 const std::string& where)             widths; throws UsageError
+//                 (`from`: where the command starts, counted from the case
+//                 start as pos_o counts it)
 //   uint64_t work(const A::Command&)                    engine operations, at most
 //   bool job_directive(JobLine<A>&)                     the core's job directives
 #pragma once
@@ -130,7 +132,9 @@ void validate_case(const Case<A>& c, const CoreLimits& limits) {
                             (it.kind == Kind::kDrain ? std::string("drain") : "command") +
                             " under feed 0 (hold) would wait forever; set a feed first");
     if (it.kind != Kind::kCommand) continue;
-    A::validate(it.cmd, at, limits, where);
+    models::LatticePoint from = at;  // as the core's position counters see it
+    for (size_t a = 0; a < from.size(); ++a) from[a] -= c.start[a];
+    A::validate(it.cmd, from, limits, where);
     models::LatticePoint next = at;
     A::apply(it.cmd, next);
     for (int i = 0; i < limits.axes; ++i) {

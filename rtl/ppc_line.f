@@ -1,0 +1,5 @@
+stepdir_axis.sv
+step_stage.sv
+feed_accum.sv
+ppc_line_step.sv
+ppc_line.sv

@@ -1,0 +1,68 @@
+// ppc_line_step: the point-by-point comparison (PPC) line engine shared by
+// ppc_line (its whole engine) and ppc_arc (its closing line). It holds one
+// line of |dx|, |dy| steps and decides, per operation, which axis steps; the
+// caller owns the directions, the feed and the step/dir stage.
+//
+// Rule (models::PpcLineRule::kGuarded, models/ppc.h): with F = y|dx| - x|dy|
+// (x, y the steps taken so far), an operation steps x when
+//   (F >= 0 and x has steps left) or y has none left,
+// else y; an x step does F -= |dy|, a y step F += |dx|. Exactly |dx| + |dy|
+// operations, each stepping one axis; axis-parallel lines (F stays 0) end
+// exactly. -|dy| <= F < |dx| throughout, so F needs MAG_W + 1 signed bits.
+// A zero-length line has one operation that steps nothing (last_o at once).
+//
+// Timing: every output is a shallow function of the registers (two reduction
+// ORs, a sign bit); an operation is one MAG_W+1-bit add with carry-in and two
+// decrements.
+module ppc_line_step #(
+  parameter int MAG_W = 32  // width of the magnitudes |dx|, |dy| (unsigned)
+) (
+  input  logic             clk_i,      // clock
+  input  logic             rst_ni,     // asynchronous, active low
+  input  logic             load_i,     // start a line: |dx| = load_ax_i, |dy| = load_ay_i, F = 0
+  input  logic [MAG_W-1:0] load_ax_i,  // |dx|
+  input  logic [MAG_W-1:0] load_ay_i,  // |dy|
+  input  logic             advance_i,  // do this clock's operation (load_i wins over it)
+  output logic             x_left_o,   // x still has steps to take
+  output logic             y_left_o,   // y still has steps to take
+  output logic             step_x_o,   // this clock's operation steps x
+  output logic             step_y_o,   // this clock's operation steps y
+  output logic             last_o      // this clock's operation is the line's last
+);
+  logic [MAG_W-1:0] ax_q, ay_q;  // |dx|, |dy| of the running line
+  logic [MAG_W-1:0] xl_q, yl_q;  // steps left per axis
+  logic [MAG_W:0]   f_q, f_d;  // F, two's complement
+  logic             pick_x;  // the rule chooses x (it steps only if x has steps left)
+
+  assign x_left_o = |xl_q;
+  assign y_left_o = |yl_q;
+  assign pick_x   = (!f_q[MAG_W] && x_left_o) || !y_left_o;
+  assign step_x_o = pick_x && x_left_o;
+  assign step_y_o = !pick_x;  // implies y_left_o
+  // At most one step left in total (none: a zero-length line).
+  assign last_o   = !(x_left_o && y_left_o) && (xl_q[MAG_W-1:1] == '0) &&
+                    (yl_q[MAG_W-1:1] == '0);
+
+  // x step: F - |dy| = F + ~|dy| + 1; y step: F + |dx|. One adder.
+  assign f_d = f_q + (pick_x ? ~{1'b0, ay_q} : {1'b0, ax_q}) + {{MAG_W{1'b0}}, pick_x};
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      ax_q <= '0;
+      ay_q <= '0;
+      xl_q <= '0;
+      yl_q <= '0;
+      f_q  <= '0;
+    end else if (load_i) begin
+      ax_q <= load_ax_i;
+      ay_q <= load_ay_i;
+      xl_q <= load_ax_i;
+      yl_q <= load_ay_i;
+      f_q  <= '0;
+    end else if (advance_i && (step_x_o || step_y_o)) begin
+      f_q <= f_d;
+      if (step_x_o) xl_q <= xl_q - MAG_W'(1);
+      else yl_q <= yl_q - MAG_W'(1);
+    end
+  end
+endmodule

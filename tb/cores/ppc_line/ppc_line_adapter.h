@@ -1,0 +1,134 @@
+// ppc_line's adapter to the shared lockstep harness: the command payload and
+// its pins, the reference model (models::PpcLineStream, the guarded rule),
+// the stimulus, the error bound and the command-line options. Everything
+// else (runners, scoreboard, monitors, reports, traces) is the harness's.
+//
+// Command: one signed delta per axis (cmd_delta_i, dx then dy). No setup.
+// Bound: the normal distance of every visited point from the line is at most
+// max(|dx|, |dy|) / L < 1 step (models::ppc_line_error_bound; reached).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "hls/ppc_line.h"
+#include "models/ppc.h"
+#include "tb/cli/cli_args.h"
+#include "tb/lockstep/pins.h"
+#include "tb/lockstep/rtl_pins.h"
+#include "tb/scoreboard/move.h"
+#include "tb/stimulus/case.h"
+#include "tb/stimulus/rng.h"
+
+namespace hwinterp::tb {
+template <class A>
+class JobLine;
+}
+
+namespace hwinterp::tb::cores::ppc_line {
+
+struct Adapter {
+  static constexpr const char* kName = "ppc_line";
+  static constexpr const char* kSummary =
+      "2-axis point-by-point comparison line interpolator (003/004 papers' PPC)";
+  template <class Cfg>
+  using Hls = hls::PpcLine<Cfg>;
+
+  struct Command {
+    std::array<int64_t, kMaxAxes> delta{};  // signed steps: dx, dy
+  };
+  struct Setup {};
+
+  // --- pins -----------------------------------------------------------------
+  static std::vector<PortSpec> own_ports(const CoreLimits& l) {
+    return {{"cmd_delta_i", l.axes, l.param("ACC_W")}};
+  }
+  static size_t own_values(const Command& c, const Setup&, const CoreLimits& l, uint64_t* out) {
+    for (int i = 0; i < l.axes; ++i)
+      out[i] = static_cast<uint64_t>(c.delta[static_cast<size_t>(i)]);
+    return static_cast<size_t>(l.axes);
+  }
+  // Direct mode: the Verilated --cc model's and the HLS core's own inputs.
+  template <class Cfg, class Rtl, class Own>
+  static void drive(const Command& c, const Setup&, Rtl& rtl, Own& own) {
+    for (int i = 0; i < Cfg::AXES; ++i) {
+      const uint64_t d = static_cast<uint64_t>(c.delta[static_cast<size_t>(i)]);
+      put_bits(rtl.cmd_delta_i, i * Cfg::ACC_W, Cfg::ACC_W, d);
+      own.delta[i] = d;
+    }
+  }
+  // SystemC mode: the own input signals, bound to both DUTs.
+  template <class Cfg>
+  struct ScPins {
+    sc_core::sc_signal<hls::pin_t<Cfg::AXES * Cfg::ACC_W>> delta{"cmd_delta"};
+    hls::pin_t<Cfg::AXES* Cfg::ACC_W> value = 0;  // kept: building a wide pin value allocates
+    template <class Dut>
+    void bind(Dut& d) {
+      d.cmd_delta_i(delta);
+    }
+    void write(const Command& c, const Setup&) {
+      for (int i = 0; i < Cfg::AXES; ++i)
+        hls::set_pin_field<Cfg::AXES * Cfg::ACC_W>(
+            value, i * Cfg::ACC_W, Cfg::ACC_W,
+            static_cast<uint64_t>(c.delta[static_cast<size_t>(i)]));
+      delta.write(value);
+    }
+  };
+
+  // --- reference model (models/ppc.h) -----------------------------------------
+  class Reference {
+   public:
+    Reference(const models::LatticePoint& start, const Command& c, const Setup& s,
+              const CoreLimits& l);
+    bool next(Move& m);
+    double error(const models::LatticePoint& p) const;
+    models::ErrorBound bound() const { return bound_; }
+    // The ideal path as a polyline (for plots): the line itself.
+    std::vector<std::vector<double>> ideal() const {
+      return {{start_.begin(), start_.end()}, {end_.begin(), end_.end()}};
+    }
+
+   private:
+    models::PpcLineStream stream_;
+    models::LatticePoint start_, end_;
+    models::ErrorBound bound_;
+  };
+  static void apply(const Command& c, models::LatticePoint& at) {
+    for (size_t i = 0; i < at.size(); ++i) at[i] += c.delta[i];
+  }
+  // |dx| + |dy| operations; a zero-length command takes one.
+  static uint64_t work(const Command& c);
+
+  // --- stimulus ---------------------------------------------------------------
+  static void validate(const Command& c, const models::LatticePoint& from, const CoreLimits& l,
+                       const std::string& where);
+  static Setup random_setup(Rng&) { return {}; }
+  // Every octant, axis-parallel and vertical lines, zero-length commands,
+  // reversals, and long lines up to the widths.
+  static Command random_command(Rng& rng, const CoreLimits& l, const models::LatticePoint& at,
+                                const Command& previous);
+  // `line X Y` (to an absolute point), `move DX DY`.
+  static bool job_directive(JobLine<Adapter>& line);
+  static Case<Adapter> line_case(const CoreLimits& l, const std::string& name,
+                                 const std::vector<int64_t>& start, const std::vector<int64_t>& end,
+                                 const RunSettings<Adapter>& settings);
+  // The eight test lines of 004_dc68f1177cad466f.txt (004_line1..8) and the
+  // line (0,0)->(4,3) of 003_b291717b57510359.txt (003_line).
+  static std::vector<Case<Adapter>> paper_lines(const CoreLimits& l,
+                                                const RunSettings<Adapter>& settings);
+  // The main regression: the paper lines, a seeded random stream, and
+  // (`commands` > 0) a random stream with aborts and feed holds.
+  static std::vector<Case<Adapter>> regression_cases(const CoreLimits& l, uint64_t commands,
+                                                     uint64_t seed);
+
+  // --- command line (hwinterp cosim --core ppc_line) -------------------------
+  static void declare_options(cli::Args& args);
+  static std::vector<std::string> sources() { return {"line", "paper-lines"}; }
+  static void setup_from_options(const cli::Args&, Setup&) {}
+  static std::vector<Case<Adapter>> cases_from_options(const cli::Args& args, const CoreLimits& l,
+                                                       const RunSettings<Adapter>& settings);
+};
+
+}  // namespace hwinterp::tb::cores::ppc_line
