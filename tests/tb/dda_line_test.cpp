@@ -174,30 +174,10 @@ TEST(DdaLine, AbortAtEveryCycleOfALineLandsOnItsPath) {
   }
 }
 
-// Direct and SystemC modes agree on the paper lines and a random stream of
-// every dda_line variant, run side by side in one elaboration through the
-// registry (the way `hwinterp regress` runs them).
-TEST(DdaLine, RegistryRunsEveryVariantInBothModes) {
-  const CoreEntry& core = find_core("dda_line");
-  std::vector<std::unique_ptr<BenchRun>> direct, sc;
-  std::vector<BenchRun*> sc_runs;
-  for (const auto& v : core.variants) {
-    BenchOptions o;
-    o.mode = "direct";
-    direct.push_back(v.regression(40, 3, o));
-    direct.back()->run_direct();
-    o.mode = "systemc";
-    sc.push_back(v.regression(40, 3, o));
-    sc_runs.push_back(sc.back().get());
-  }
-  run_systemc(sc_runs);
-  ASSERT_EQ(direct.size(), 3u);
-  for (size_t k = 0; k < direct.size(); ++k) {
-    expect_all_pass(direct[k]->results());
-    expect_all_pass(sc[k]->results());
-    EXPECT_EQ(direct[k]->cycles(), sc[k]->cycles());
-  }
-}
+// Every dda_line variant through the registry in both modes, the way
+// `hwinterp regress` runs them: the paper lines (plain and half preload) and
+// the two random streams.
+TEST(DdaLine, RegistryRunsEveryVariantInBothModes) { regression_both_modes("dda_line", 3, 18); }
 
 std::string write_job(const std::string& name, const std::string& text) {
   const std::string path = hwinterp::testing::scratch_dir("job") + "/" + name;

@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
+#include "lockstep_support.h"
 #include "models/paper_data_001_003_004.h"
 #include "models/ppc.h"
-#include "ppc_lockstep_helpers.h"
 #include "tb/cores/ppc_arc/ppc_arc_adapter.h"
 
 namespace hwinterp::tb {
@@ -21,9 +21,6 @@ namespace {
 
 using A = cores::ppc_arc::Adapter;
 using models::LatticePoint;
-using ppc_testing::describe;
-using ppc_testing::expect_all_passed;
-using ppc_testing::run_cases;
 namespace pd = models::paper;
 
 template <class Cfg>
@@ -56,10 +53,10 @@ std::vector<CaseResult> run_arcs(const std::vector<Arc>& arcs, const RunSettings
   for (const auto& a : arcs) cases.push_back(arc_case(l, a, s));
   BenchOptions o;
   o.record_path = true;
-  const auto r = run_cases<A, Cfg>(cases, o);
-  expect_all_passed(r, arcs.size());
+  const auto r = testing::run_direct<testing::Variant<A, Cfg>>(cases, o);
+  testing::expect_all_pass(r, arcs.size());
   for (size_t k = 0; k < r.size(); ++k) {
-    EXPECT_EQ(r[k].visited, model_points(arcs[k])) << k << ": " << describe(r[k]);
+    EXPECT_EQ(r[k].visited, model_points(arcs[k])) << k << ": " << testing::describe(r[k]);
     EXPECT_EQ(r[k].end_position, arcs[k].e) << k;
   }
   return r;
@@ -71,8 +68,9 @@ TYPED_TEST(PpcArcLockstep, PaperArc003) {
   const CoreLimits l = limits_of<TypeParam>();
   BenchOptions o;
   o.record_path = true;
-  const auto r = run_cases<A, TypeParam>(A::paper_arcs(l, default_settings<A>(l)), o);
-  expect_all_passed(r, 1);
+  const auto r = testing::run_direct<testing::Variant<A, TypeParam>>(
+      A::paper_arcs(l, default_settings<A>(l)), o);
+  testing::expect_all_pass(r, 1);
   ASSERT_EQ(r[0].visited.size(), pd::kPpcArc.size() + 1);
   for (size_t k = 0; k < pd::kPpcArc.size(); ++k)
     EXPECT_EQ(r[0].visited[k + 1], (LatticePoint{pd::kPpcArc[k][0], pd::kPpcArc[k][1]})) << k;
@@ -86,9 +84,9 @@ TYPED_TEST(PpcArcLockstep, PaperArc003) {
 // 2 tail edges: 2 + 1 + 1 + 2 * 8 + 1 + 2 = 23.
 TYPED_TEST(PpcArcLockstep, PaperArcExactClocks) {
   const CoreLimits l = limits_of<TypeParam>();
-  const auto r = run_cases<A, TypeParam>(
-      {arc_case(l, {{0, 0}, {4, 0}, {0, 4}, true}, ppc_testing::half_feed_unit_timing<A>(l))});
-  expect_all_passed(r, 1);
+  const auto r = testing::run_direct<testing::Variant<A, TypeParam>>(
+      {arc_case(l, {{0, 0}, {4, 0}, {0, 4}, true}, testing::half_feed_unit_timing<A>(l))});
+  testing::expect_all_pass(r, 1);
   EXPECT_EQ(r[0].cycles, 23u);
 }
 
@@ -167,7 +165,7 @@ TYPED_TEST(PpcArcLockstep, LargestRadius) {
     arcs.push_back({{-m - 1, 0}, {0, 0}, {-m - 1, m}, true});  // end one step inside
   }
   const auto res = run_arcs<TypeParam>(arcs, default_settings<A>(l));
-  for (const auto& x : res) EXPECT_GT(x.steps[0] + x.steps[1], 200u) << describe(x);
+  for (const auto& x : res) EXPECT_GT(x.steps[0] + x.steps[1], 200u) << testing::describe(x);
 }
 
 TYPED_TEST(PpcArcLockstep, RandomStreamsClean) {
@@ -177,9 +175,9 @@ TYPED_TEST(PpcArcLockstep, RandomStreamsClean) {
     cases.push_back(random_case<A>(l, 300, seed));
     cases.push_back(random_case<A>(l, 300, seed, {true, true}));
   }
-  const auto r = run_cases<A, TypeParam>(cases);
-  expect_all_passed(r, 4);
-  for (const auto& c : r) EXPECT_GT(c.commands, 250u) << describe(c);
+  const auto r = testing::run_direct<testing::Variant<A, TypeParam>>(cases);
+  testing::expect_all_pass(r, 4);
+  for (const auto& c : r) EXPECT_GT(c.commands, 250u) << testing::describe(c);
   EXPECT_FALSE(r[1].aborts.empty());
   for (const auto& c : r)
     for (const auto& a : c.aborts) EXPECT_TRUE(a.on_reference_path);
@@ -194,12 +192,13 @@ TYPED_TEST(PpcArcLockstep, AbortMidArcLandsOnReferencePath) {
   s.timing = {3, 2, 2, 2};
   for (const Arc& a :
        {Arc{{0, 0}, {40, 0}, {40, 0}, true}, Arc{{0, 0}, {4, 0}, {-30, 25}, false}}) {
-    const uint64_t n = run_cases<A, TypeParam>({arc_case(l, a, s)})[0].cycles;
+    const uint64_t n =
+        testing::run_direct<testing::Variant<A, TypeParam>>({arc_case(l, a, s)})[0].cycles;
     for (uint64_t at : {n / 10, n / 2, n * 9 / 10}) {
       BenchOptions o;
       o.abort_at = at;
-      const auto r = run_cases<A, TypeParam>({arc_case(l, a, s)}, o);
-      expect_all_passed(r, 1);
+      const auto r = testing::run_direct<testing::Variant<A, TypeParam>>({arc_case(l, a, s)}, o);
+      testing::expect_all_pass(r, 1);
       ASSERT_EQ(r[0].aborts.size(), 1u);
       const AbortRecord& rec = r[0].aborts[0];
       const auto path = model_points(a);
@@ -217,7 +216,8 @@ TYPED_TEST(PpcArcLockstep, InjectedMismatchIsCaught) {
   const CoreLimits l = limits_of<TypeParam>();
   BenchOptions o;
   o.faults.flip_hls_step_at = 12;
-  const auto r = run_cases<A, TypeParam>(A::paper_arcs(l, default_settings<A>(l)), o);
+  const auto r = testing::run_direct<testing::Variant<A, TypeParam>>(
+      A::paper_arcs(l, default_settings<A>(l)), o);
   ASSERT_EQ(r.size(), 1u);
   EXPECT_FALSE(r[0].passed());
   ASSERT_TRUE(r[0].first_mismatch.has_value());
@@ -304,14 +304,14 @@ TEST(PpcArcJob, ArcDirective) {
   const auto cases = parse_job<A>(path, l, default_settings<A>(l));
   ASSERT_EQ(cases.size(), 1u);
   ASSERT_EQ(command_count(cases[0]), 3u);
-  const auto r = run_cases<A, ppc_arc_edge_cfg>(cases);
-  expect_all_passed(r, 1);
+  const auto r = testing::run_direct<testing::Variant<A, ppc_arc_edge_cfg>>(cases);
+  testing::expect_all_pass(r, 1);
   EXPECT_EQ(r[0].end_position, (LatticePoint{0, 5}));
   std::ofstream(path) << "arc 0 0 0 4 left\n";
   EXPECT_THROW(parse_job<A>(path, l, default_settings<A>(l)), cli::UsageError);
 }
 
-TEST(PpcArcRegistry, RegressionBothModes) { ppc_testing::regression_both_modes("ppc_arc", 2, 5); }
+TEST(PpcArcRegistry, RegressionBothModes) { testing::regression_both_modes("ppc_arc", 2, 5); }
 
 }  // namespace
 }  // namespace hwinterp::tb

@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "lockstep_support.h"
 #include "models/paper_data_001_003_004.h"
 #include "models/ppc.h"
-#include "ppc_lockstep_helpers.h"
 #include "tb/cores/ppc_line/ppc_line_adapter.h"
 
 namespace hwinterp::tb {
@@ -19,9 +19,6 @@ namespace {
 
 using A = cores::ppc_line::Adapter;
 using models::LatticePoint;
-using ppc_testing::describe;
-using ppc_testing::expect_all_passed;
-using ppc_testing::run_cases;
 namespace pd = models::paper;
 
 template <class Cfg>
@@ -39,8 +36,9 @@ TYPED_TEST(PpcLineLockstep, PaperLine003) {
   const CoreLimits l = limits_of<TypeParam>();
   BenchOptions o;
   o.record_path = true;
-  const auto r = run_cases<A, TypeParam>({line(l, {0, 0}, {4, 3}, default_settings<A>(l))}, o);
-  expect_all_passed(r, 1);
+  const auto r = testing::run_direct<testing::Variant<A, TypeParam>>(
+      {line(l, {0, 0}, {4, 3}, default_settings<A>(l))}, o);
+  testing::expect_all_pass(r, 1);
   ASSERT_EQ(r[0].visited.size(), pd::kPpcLine.size() + 1);
   EXPECT_EQ(r[0].visited[0], (LatticePoint{0, 0}));
   for (size_t k = 0; k < pd::kPpcLine.size(); ++k)
@@ -58,9 +56,9 @@ TYPED_TEST(PpcLineLockstep, Line1SixtyOperationsExactClocks) {
   const CoreLimits l = limits_of<TypeParam>();
   BenchOptions o;
   o.record_path = true;
-  const auto r = run_cases<A, TypeParam>(
-      {line(l, {0, 0}, {20, 40}, ppc_testing::half_feed_unit_timing<A>(l))}, o);
-  expect_all_passed(r, 1);
+  const auto r = testing::run_direct<testing::Variant<A, TypeParam>>(
+      {line(l, {0, 0}, {20, 40}, testing::half_feed_unit_timing<A>(l))}, o);
+  testing::expect_all_pass(r, 1);
   EXPECT_EQ(r[0].cycles, 127u);
   EXPECT_EQ(r[0].first_step_cycle, 6u);
   ASSERT_EQ(r[0].visited.size(), 61u);  // the start and one point per operation
@@ -77,8 +75,8 @@ TYPED_TEST(PpcLineLockstep, Line1SixtyOperationsExactClocks) {
 TYPED_TEST(PpcLineLockstep, PaperLines) {
   const CoreLimits l = limits_of<TypeParam>();
   const auto cases = A::paper_lines(l, default_settings<A>(l));
-  const auto r = run_cases<A, TypeParam>(cases);
-  expect_all_passed(r, 9);
+  const auto r = testing::run_direct<testing::Variant<A, TypeParam>>(cases);
+  testing::expect_all_pass(r, 9);
   for (size_t k = 0; k < 8; ++k) {
     const auto& p = pd::kRatioLines[k];
     EXPECT_EQ(r[k].end_position, (LatticePoint{p[2], p[3]})) << k;
@@ -95,9 +93,9 @@ TYPED_TEST(PpcLineLockstep, RandomStreamsClean) {
     cases.push_back(random_case<A>(l, 300, seed));
     cases.push_back(random_case<A>(l, 300, seed, {true, true}));
   }
-  const auto r = run_cases<A, TypeParam>(cases);
-  expect_all_passed(r, 4);
-  for (const auto& c : r) EXPECT_GT(c.commands, 250u) << describe(c);
+  const auto r = testing::run_direct<testing::Variant<A, TypeParam>>(cases);
+  testing::expect_all_pass(r, 4);
+  for (const auto& c : r) EXPECT_GT(c.commands, 250u) << testing::describe(c);
   EXPECT_FALSE(r[1].aborts.empty());
   for (const auto& c : r)
     for (const auto& a : c.aborts) EXPECT_TRUE(a.on_reference_path);
@@ -123,8 +121,8 @@ TYPED_TEST(PpcLineLockstep, VerticalHorizontalAndZeroLength) {
   }
   BenchOptions o;
   o.record_path = true;
-  const auto r = run_cases<A, TypeParam>({c}, o);
-  expect_all_passed(r, 1);
+  const auto r = testing::run_direct<testing::Variant<A, TypeParam>>({c}, o);
+  testing::expect_all_pass(r, 1);
   EXPECT_EQ(r[0].commands, 8u);
   EXPECT_EQ(r[0].end_position, (LatticePoint{-1, 0}));
   EXPECT_EQ(r[0].max_path_error_steps, 0.0);  // every point on its line
@@ -136,8 +134,9 @@ TYPED_TEST(PpcLineLockstep, VerticalHorizontalAndZeroLength) {
 // step, done_o; busy falls right after it.
 TYPED_TEST(PpcLineLockstep, ZeroLengthTakesOneOperation) {
   const CoreLimits l = limits_of<TypeParam>();
-  const auto r = run_cases<A, TypeParam>({line(l, {3, -2}, {3, -2}, default_settings<A>(l))});
-  expect_all_passed(r, 1);
+  const auto r = testing::run_direct<testing::Variant<A, TypeParam>>(
+      {line(l, {3, -2}, {3, -2}, default_settings<A>(l))});
+  testing::expect_all_pass(r, 1);
   EXPECT_EQ(r[0].steps, (std::vector<uint64_t>{0, 0}));
   // 2 reset, take, load, the operation (done_o, busy_o falls), 2 tail.
   EXPECT_EQ(r[0].cycles, 7u);
@@ -154,8 +153,9 @@ TYPED_TEST(PpcLineLockstep, AbortMidLineLandsOnReferencePath) {
     o.abort_at = at;
     RunSettings<A> s = default_settings<A>(l);
     s.timing = {3, 2, 2, 2};
-    const auto r = run_cases<A, TypeParam>({line(l, {0, 0}, {300, -200}, s)}, o);
-    expect_all_passed(r, 1);
+    const auto r =
+        testing::run_direct<testing::Variant<A, TypeParam>>({line(l, {0, 0}, {300, -200}, s)}, o);
+    testing::expect_all_pass(r, 1);
     ASSERT_EQ(r[0].aborts.size(), 1u) << at;
     const AbortRecord& a = r[0].aborts[0];
     EXPECT_TRUE(a.on_reference_path);
@@ -177,8 +177,9 @@ TYPED_TEST(PpcLineLockstep, FullWidthDeltasAborted) {
            {-pos - 1, 3}, {pos, -pos - 1}, {7, -pos - 1}, {-pos - 1, -pos + 5}}) {
     BenchOptions o;
     o.abort_at = 3000;
-    const auto r = run_cases<A, TypeParam>({line(l, {0, 0}, {dx, dy}, default_settings<A>(l))}, o);
-    expect_all_passed(r, 1);
+    const auto r = testing::run_direct<testing::Variant<A, TypeParam>>(
+        {line(l, {0, 0}, {dx, dy}, default_settings<A>(l))}, o);
+    testing::expect_all_pass(r, 1);
     EXPECT_GT(r[0].steps[0] + r[0].steps[1], 500u);
   }
 }
@@ -188,7 +189,8 @@ TYPED_TEST(PpcLineLockstep, InjectedMismatchIsCaught) {
   const CoreLimits l = limits_of<TypeParam>();
   BenchOptions o;
   o.faults.flip_hls_step_at = 20;
-  const auto r = run_cases<A, TypeParam>({line(l, {0, 0}, {20, 40}, default_settings<A>(l))}, o);
+  const auto r = testing::run_direct<testing::Variant<A, TypeParam>>(
+      {line(l, {0, 0}, {20, 40}, default_settings<A>(l))}, o);
   ASSERT_EQ(r.size(), 1u);
   EXPECT_FALSE(r[0].passed());
   ASSERT_TRUE(r[0].first_mismatch.has_value());
@@ -203,16 +205,14 @@ TEST(PpcLineJob, LineAndMoveDirectives) {
   const auto cases = parse_job<A>(path, l, default_settings<A>(l));
   ASSERT_EQ(cases.size(), 1u);
   ASSERT_EQ(command_count(cases[0]), 3u);
-  const auto r = run_cases<A, ppc_line_edge_cfg>(cases);
-  expect_all_passed(r, 1);
+  const auto r = testing::run_direct<testing::Variant<A, ppc_line_edge_cfg>>(cases);
+  testing::expect_all_pass(r, 1);
   EXPECT_EQ(r[0].steps, (std::vector<uint64_t>{8 + 10, 7 + 10}));
   EXPECT_THROW(A::validate({{1024, 0}}, {0, 0}, l, "x"), cli::UsageError);
   EXPECT_NO_THROW(A::validate({{-1024, 1023}}, {0, 0}, l, "x"));
 }
 
-TEST(PpcLineRegistry, RegressionBothModes) {
-  ppc_testing::regression_both_modes("ppc_line", 2, 11);
-}
+TEST(PpcLineRegistry, RegressionBothModes) { testing::regression_both_modes("ppc_line", 2, 11); }
 
 }  // namespace
 }  // namespace hwinterp::tb
