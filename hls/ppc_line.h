@@ -115,20 +115,7 @@ class PpcLine {
     done_q_ = last;
   }
 
-  Outputs outputs() const {
-    Outputs o;
-    o.cmd_ready = !buf_valid_q_;
-    o.step = 0;
-    o.dir = 0;
-    for (int i = 0; i < AXES; ++i) {
-      o.step[i] = out_.step(i);
-      o.dir[i] = out_.dir(i);
-      o.pos[i] = out_.pos(i);
-    }
-    o.busy = act_q_ || buf_valid_q_ || out_.any_step();
-    o.done = done_q_;
-    return o;
-  }
+  Outputs outputs() const { return out_.outputs(!buf_valid_q_, act_q_ || buf_valid_q_, done_q_); }
 
  private:
   // One-entry command buffer.

@@ -6,6 +6,7 @@
 #include <systemc>
 
 #include "hls/stepdir_axis.h"
+#include "hls/stepper_io.h"
 
 namespace hwinterp::hls {
 
@@ -48,6 +49,23 @@ class StepStage {
     bool any = false;
     for (int i = 0; i < AXES; ++i) any = any || axis_[i].step();
     return any;
+  }
+
+  // The shared outputs of a core around this stage: busy_o while the engine
+  // is busy (a command buffered or running) or a pulse is high.
+  StepperOutputs<AXES, POS_W> outputs(bool cmd_ready, bool engine_busy, bool done) const {
+    StepperOutputs<AXES, POS_W> o;
+    o.cmd_ready = cmd_ready;
+    o.step = 0;
+    o.dir = 0;
+    for (int i = 0; i < AXES; ++i) {
+      o.step[i] = axis_[i].step();
+      o.dir[i] = axis_[i].dir();
+      o.pos[i] = pos_q_[i];
+    }
+    o.busy = engine_busy || any_step();
+    o.done = done;
+    return o;
   }
 
  private:

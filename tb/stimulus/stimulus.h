@@ -105,6 +105,18 @@ Case<A> random_case(const CoreLimits& limits, uint64_t commands, uint64_t seed,
   return c;
 }
 
+// The random part of every core's regression: a seeded stream of `commands`
+// ("random") and the same seed with aborts and feed holds
+// ("random_abort_hold"); nothing when `commands` is 0.
+template <class A>
+void append_random_streams(std::vector<Case<A>>& cases, const CoreLimits& limits, uint64_t commands,
+                           uint64_t seed) {
+  if (!commands) return;
+  cases.push_back(random_case<A>(limits, commands, seed));
+  cases.push_back(random_case<A>(limits, commands, seed, {true, true}));
+  cases.back().name = "random_abort_hold";
+}
+
 // Checks a case against the variant's widths: every command fits the core's
 // datapath (the adapter's validate), every position reached fits POS_W
 // (signed, counted from the case start as the core counts), settings fit

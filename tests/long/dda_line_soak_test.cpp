@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "../tb/lockstep_support.h"
+#include "tb/stimulus/delta_commands.h"
 
 namespace hwinterp::tb::testing {
 namespace {
@@ -22,7 +23,7 @@ void long_lines() {
     end[1] = -333333;
     if (l.axes > 2) end[2] = 7;
     expect_all_pass(
-        run_direct<V>({A::line_case(l, "long", std::vector<int64_t>(end.size(), 0), end, s)}));
+        run_direct<V>({delta_line_case<A>(l, "long", std::vector<int64_t>(end.size(), 0), end, s)}));
   }
 }
 

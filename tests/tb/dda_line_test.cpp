@@ -36,8 +36,8 @@ TEST(DdaLine, PaperLines) {
   const CoreLimits l = N2::limits();
   RunSettings<A> plain = default_settings<A>(l), half = plain;
   half.setup.half_preload = true;
-  const auto p = run_direct<N2>(A::paper_lines(l, plain));
-  const auto h = run_direct<N2>(A::paper_lines(l, half));
+  const auto p = run_direct<N2>(paper_lines_004<A>(l, plain));
+  const auto h = run_direct<N2>(paper_lines_004<A>(l, half));
   expect_all_pass(p);
   expect_all_pass(h);
   ASSERT_EQ(p.size(), 8u);
@@ -88,7 +88,7 @@ TEST(DdaLine, StepRateIsExactlyTheTimingLimit) {
   const CoreLimits l = N2::limits();
   for (int64_t n : {16, 100}) {
     const auto r =
-        run_direct<N2>({A::line_case(l, "x", {0, 0}, {n, 0}, settings(l, {3, 2, 1, 1}))});
+        run_direct<N2>({delta_line_case<A>(l, "x", {0, 0}, {n, 0}, settings(l, {3, 2, 1, 1}))});
     expect_all_pass(r);
     // Reset (2) + take (2) + n pulses 5 clocks apart + the last pulse's tail.
     const uint64_t overhead = r[0].cycles - static_cast<uint64_t>(5 * n);
@@ -105,7 +105,7 @@ TEST(DdaLine, FeedWordSetsTheIterationRate) {
   quarter.feed = l.full_feed() / 4;
   auto cycles = [&](const RunSettings<A>& s, int64_t dy) {
     // (0,0)->(0,dy) with dy a power of two: 2 dy iterations, a step every other one.
-    const auto r = run_direct<N2>({A::line_case(l, "y", {0, 0}, {0, dy}, s)});
+    const auto r = run_direct<N2>({delta_line_case<A>(l, "y", {0, 0}, {0, dy}, s)});
     expect_all_pass(r);
     return static_cast<double>(r[0].cycles);
   };
@@ -122,7 +122,7 @@ TEST(DdaLine, FeedWordSetsTheIterationRate) {
 TEST(DdaLine, EveryInjectedGlitchIsATimingViolation) {
   const CoreLimits l = N2::limits();
   const std::vector<Case<A>> line = {
-      A::line_case(l, "x", {0, 0}, {8, 0}, settings(l, {4, 4, 1, 1}))};
+      delta_line_case<A>(l, "x", {0, 0}, {8, 0}, settings(l, {4, 4, 1, 1}))};
   const auto clean = run_direct<N2>(line);
   expect_all_pass(clean);
   ASSERT_GT(clean[0].cycles, 60u);
@@ -154,7 +154,7 @@ TEST(DdaLine, EveryInjectedGlitchIsATimingViolation) {
 // exactly where the first would have.
 TEST(DdaLine, AbortAtEveryCycleOfALineLandsOnItsPath) {
   const CoreLimits l = N2::limits();
-  Case<A> c = A::line_case(l, "abort", {0, 0}, {20, 40}, settings(l, {2, 1, 1, 1}));
+  Case<A> c = delta_line_case<A>(l, "abort", {0, 0}, {20, 40}, settings(l, {2, 1, 1, 1}));
   const auto clean = run_direct<N2>({c});
   expect_all_pass(clean);
   const std::vector<models::DdaMove> path =

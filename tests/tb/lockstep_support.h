@@ -14,6 +14,7 @@
 #include "tb/lockstep/direct.h"
 #include "tb/lockstep/registry.h"
 #include "tb/lockstep/systemc.h"
+#include "tb/stimulus/delta_commands.h"
 
 namespace hwinterp::tb::testing {
 

@@ -28,7 +28,7 @@ TYPED_TEST_SUITE(PpcLineLockstep, Variants);
 
 Case<A> line(const CoreLimits& l, const LatticePoint& a, const LatticePoint& b,
              const RunSettings<A>& s) {
-  return A::line_case(l, "line", a, b, s);
+  return delta_line_case<A>(l, "line", a, b, s);
 }
 
 // 003's Fig. 4 from the hardware: (0,0)->(4,3) in 7 steps through the paper's points.

@@ -3,8 +3,7 @@
 #include <algorithm>
 #include <cstdlib>
 
-#include "models/paper_data_001_003_004.h"
-#include "tb/stimulus/stimulus.h"
+#include "tb/stimulus/delta_commands.h"
 
 namespace hwinterp::tb::cores::dda_line {
 
@@ -104,15 +103,8 @@ Adapter::Command Adapter::random_command(Rng& rng, const CoreLimits& l,
 }
 
 bool Adapter::job_directive(JobLine<Adapter>& line) {
-  const std::string& key = line.words[0];
-  if (key == "line" || key == "move") {
-    const models::LatticePoint v = line.point(1);
-    Command c;
-    for (size_t i = 0; i < v.size(); ++i) c.delta[i] = key == "line" ? v[i] - line.at()[i] : v[i];
-    line.command(c);
-    return true;
-  }
-  if (key == "preload") {
+  if (delta_job_directive(line)) return true;
+  if (line.words[0] == "preload") {
     const auto& w = line.words;
     if (w.size() != 2 || (w[1] != "half" && w[1] != "zero"))
       throw UsageError(line.where + ": preload must be 'half' or 'zero', not '" +
@@ -123,47 +115,16 @@ bool Adapter::job_directive(JobLine<Adapter>& line) {
   return false;
 }
 
-Case<Adapter> Adapter::line_case(const CoreLimits& l, const std::string& name,
-                                 const std::vector<int64_t>& start, const std::vector<int64_t>& end,
-                                 const RunSettings<Adapter>& settings) {
-  if (start.size() != end.size())
-    throw UsageError("line '" + name + "': start and end have different axis counts");
-  Case<Adapter> c;
-  c.name = name;
-  c.start = pad_point(l, start, "line '" + name + "'");
-  const models::LatticePoint e = pad_point(l, end, "line '" + name + "'");
-  Command cmd;
-  for (size_t i = 0; i < e.size(); ++i) cmd.delta[i] = e[i] - c.start[i];
-  c.settings = settings;
-  c.items.push_back(command_item<Adapter>(cmd));
-  return c;
-}
-
-std::vector<Case<Adapter>> Adapter::paper_lines(const CoreLimits& l,
-                                                const RunSettings<Adapter>& settings) {
-  std::vector<Case<Adapter>> cases;
-  int n = 0;
-  for (const auto& p : models::paper::kRatioLines)
-    cases.push_back(
-        line_case(l, "004_line" + std::to_string(++n), {p[0], p[1]}, {p[2], p[3]}, settings));
-  return cases;
-}
-
 std::vector<Case<Adapter>> Adapter::regression_cases(const CoreLimits& l, uint64_t commands,
                                                      uint64_t seed) {
   RunSettings<Adapter> plain = default_settings<Adapter>(l), half = plain;
   half.setup.half_preload = true;
-  std::vector<Case<Adapter>> cases = paper_lines(l, plain);
-  for (auto c : paper_lines(l, half)) {
+  std::vector<Case<Adapter>> cases = paper_lines_004(l, plain);
+  for (auto c : paper_lines_004(l, half)) {
     c.name += "_half";
     cases.push_back(std::move(c));
   }
-  if (commands) {
-    cases.push_back(random_case<Adapter>(l, commands, seed));
-    Case<Adapter> extra = random_case<Adapter>(l, commands, seed, {true, true});
-    extra.name = "random_abort_hold";
-    cases.push_back(std::move(extra));
-  }
+  append_random_streams(cases, l, commands, seed);
   return cases;
 }
 
@@ -176,14 +137,8 @@ void Adapter::declare_options(cli::Args& args) {
 
 std::vector<Case<Adapter>> Adapter::cases_from_options(const cli::Args& args, const CoreLimits& l,
                                                        const RunSettings<Adapter>& settings) {
-  if (args.given("paper-lines")) return paper_lines(l, settings);
-  const std::vector<int64_t> v = args.integer_list("line");
-  if (v.size() < 2 || v.size() % 2)
-    throw UsageError("--line: '" + args.str("line") +
-                     "' needs start and end coordinates (2k numbers)");
-  const size_t k = v.size() / 2;
-  return {line_case(l, "line", {v.begin(), v.begin() + static_cast<std::ptrdiff_t>(k)},
-                    {v.begin() + static_cast<std::ptrdiff_t>(k), v.end()}, settings)};
+  if (args.given("paper-lines")) return paper_lines_004(l, settings);
+  return {delta_line_from_option(args, l, settings)};
 }
 
 }  // namespace hwinterp::tb::cores::dda_line

@@ -114,15 +114,9 @@ struct Adapter {
   static Setup random_setup(Rng& rng) { return {rng.chance(1, 2)}; }
   static Command random_command(Rng& rng, const CoreLimits& l, const models::LatticePoint& at,
                                 const Command& previous);
-  // `line X Y ...` (to an absolute point), `move DX DY ...`, `preload half|zero`.
+  // `line X Y ...` (to an absolute point), `move DX DY ...`
+  // (tb/stimulus/delta_commands.h), `preload half|zero`.
   static bool job_directive(JobLine<Adapter>& line);
-  // A line from `start` to `end` (leading axes; the rest are 0).
-  static Case<Adapter> line_case(const CoreLimits& l, const std::string& name,
-                                 const std::vector<int64_t>& start, const std::vector<int64_t>& end,
-                                 const RunSettings<Adapter>& settings);
-  // The eight test lines of 004_dc68f1177cad466f.txt, one case each.
-  static std::vector<Case<Adapter>> paper_lines(const CoreLimits& l,
-                                                const RunSettings<Adapter>& settings);
   // The main regression: the paper lines with plain and half preload, a
   // seeded random stream, and (`commands` > 0) a random stream with aborts
   // and feed holds.

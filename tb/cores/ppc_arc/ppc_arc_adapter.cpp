@@ -208,12 +208,7 @@ std::vector<Case<Adapter>> Adapter::regression_cases(const CoreLimits& l, uint64
   std::vector<Case<Adapter>> cases = paper_arcs(l, plain);
   cases.push_back(arc_case(l, "full_circle_cw", {0, 0}, {5, 0}, {5, 0}, false, plain));
   cases.push_back(arc_case(l, "off_circle_end", {0, 0}, {4, 0}, {-1, 5}, true, plain));
-  if (commands) {
-    cases.push_back(random_case<Adapter>(l, commands, seed));
-    Case<Adapter> extra = random_case<Adapter>(l, commands, seed, {true, true});
-    extra.name = "random_abort_hold";
-    cases.push_back(std::move(extra));
-  }
+  append_random_streams(cases, l, commands, seed);
   return cases;
 }
 

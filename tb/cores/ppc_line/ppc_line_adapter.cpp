@@ -123,54 +123,17 @@ Adapter::Command Adapter::random_command(Rng& rng, const CoreLimits& l,
   return c;
 }
 
-bool Adapter::job_directive(JobLine<Adapter>& line) {
-  const std::string& key = line.words[0];
-  if (key == "line" || key == "move") {
-    const models::LatticePoint v = line.point(1);
-    Command c;
-    for (size_t i = 0; i < v.size(); ++i) c.delta[i] = key == "line" ? v[i] - line.at()[i] : v[i];
-    line.command(c);
-    return true;
-  }
-  return false;
-}
-
-Case<Adapter> Adapter::line_case(const CoreLimits& l, const std::string& name,
-                                 const std::vector<int64_t>& start, const std::vector<int64_t>& end,
-                                 const RunSettings<Adapter>& settings) {
-  if (start.size() != end.size())
-    throw UsageError("line '" + name + "': start and end have different axis counts");
-  Case<Adapter> c;
-  c.name = name;
-  c.start = pad_point(l, start, "line '" + name + "'");
-  const models::LatticePoint e = pad_point(l, end, "line '" + name + "'");
-  Command cmd;
-  for (size_t i = 0; i < e.size(); ++i) cmd.delta[i] = e[i] - c.start[i];
-  c.settings = settings;
-  c.items.push_back(command_item<Adapter>(cmd));
-  return c;
-}
-
 std::vector<Case<Adapter>> Adapter::paper_lines(const CoreLimits& l,
                                                 const RunSettings<Adapter>& settings) {
-  std::vector<Case<Adapter>> cases;
-  int n = 0;
-  for (const auto& p : models::paper::kRatioLines)
-    cases.push_back(
-        line_case(l, "004_line" + std::to_string(++n), {p[0], p[1]}, {p[2], p[3]}, settings));
-  cases.push_back(line_case(l, "003_line", {0, 0}, {4, 3}, settings));
+  std::vector<Case<Adapter>> cases = paper_lines_004(l, settings);
+  cases.push_back(delta_line_case(l, "003_line", {0, 0}, {4, 3}, settings));
   return cases;
 }
 
 std::vector<Case<Adapter>> Adapter::regression_cases(const CoreLimits& l, uint64_t commands,
                                                      uint64_t seed) {
   std::vector<Case<Adapter>> cases = paper_lines(l, default_settings<Adapter>(l));
-  if (commands) {
-    cases.push_back(random_case<Adapter>(l, commands, seed));
-    Case<Adapter> extra = random_case<Adapter>(l, commands, seed, {true, true});
-    extra.name = "random_abort_hold";
-    cases.push_back(std::move(extra));
-  }
+  append_random_streams(cases, l, commands, seed);
   return cases;
 }
 
@@ -184,11 +147,7 @@ void Adapter::declare_options(cli::Args& args) {
 std::vector<Case<Adapter>> Adapter::cases_from_options(const cli::Args& args, const CoreLimits& l,
                                                        const RunSettings<Adapter>& settings) {
   if (args.given("paper-lines")) return paper_lines(l, settings);
-  const std::vector<int64_t> v = args.integer_list("line");
-  if (v.size() != 4)
-    throw UsageError("--line: '" + args.str("line") + "' needs X0,Y0,X1,Y1 (4 numbers, " +
-                     std::to_string(v.size()) + " given)");
-  return {line_case(l, "line", {v[0], v[1]}, {v[2], v[3]}, settings)};
+  return {delta_line_from_option(args, l, settings)};
 }
 
 }  // namespace hwinterp::tb::cores::ppc_line

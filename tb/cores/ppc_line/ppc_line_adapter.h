@@ -20,6 +20,7 @@
 #include "tb/lockstep/rtl_pins.h"
 #include "tb/scoreboard/move.h"
 #include "tb/stimulus/case.h"
+#include "tb/stimulus/delta_commands.h"
 #include "tb/stimulus/rng.h"
 
 namespace hwinterp::tb {
@@ -109,11 +110,8 @@ struct Adapter {
   // reversals, and long lines up to the widths.
   static Command random_command(Rng& rng, const CoreLimits& l, const models::LatticePoint& at,
                                 const Command& previous);
-  // `line X Y` (to an absolute point), `move DX DY`.
-  static bool job_directive(JobLine<Adapter>& line);
-  static Case<Adapter> line_case(const CoreLimits& l, const std::string& name,
-                                 const std::vector<int64_t>& start, const std::vector<int64_t>& end,
-                                 const RunSettings<Adapter>& settings);
+  // `line X Y` (to an absolute point), `move DX DY` (tb/stimulus/delta_commands.h).
+  static bool job_directive(JobLine<Adapter>& line) { return delta_job_directive(line); }
   // The eight test lines of 004_dc68f1177cad466f.txt (004_line1..8) and the
   // line (0,0)->(4,3) of 003_b291717b57510359.txt (003_line).
   static std::vector<Case<Adapter>> paper_lines(const CoreLimits& l,
