@@ -59,21 +59,6 @@ uint64_t Adapter::work(const Command& c) {
   return models::dda_iterations(delta_vector(c, kMaxAxes));
 }
 
-void Adapter::validate(const Command& c, const models::LatticePoint& at, const CoreLimits& l,
-                       const std::string& where) {
-  (void)at;
-  const int acc_w = l.param("ACC_W");
-  const int64_t max = (int64_t{1} << (acc_w - 1)) - 1, min = -max - 1;
-  for (int i = 0; i < l.axes; ++i) {
-    const int64_t d = c.delta[static_cast<size_t>(i)];
-    if (d > max || d < min)
-      throw UsageError(where + ": delta " + std::to_string(d) + " on axis " + std::to_string(i) +
-                       " is wider than the " + std::to_string(acc_w) + "-bit datapath of " +
-                       l.variant + " (limit " + std::to_string(min) + ".." + std::to_string(max) +
-                       ")");
-  }
-}
-
 // All octants, zero deltas, single-axis moves and reversals of the previous
 // command; positions stay well inside POS_W and deltas inside ACC_W.
 Adapter::Command Adapter::random_command(Rng& rng, const CoreLimits& l,

@@ -20,12 +20,8 @@
 #include "tb/lockstep/rtl_pins.h"
 #include "tb/scoreboard/move.h"
 #include "tb/stimulus/case.h"
+#include "tb/stimulus/delta_commands.h"
 #include "tb/stimulus/rng.h"
-
-namespace hwinterp::tb {
-template <class A>
-class JobLine;
-}
 
 namespace hwinterp::tb::cores::dda_line {
 
@@ -109,8 +105,12 @@ struct Adapter {
   static uint64_t work(const Command& c);  // 2^n iterations
 
   // --- stimulus ---------------------------------------------------------------
-  static void validate(const Command& c, const models::LatticePoint& at, const CoreLimits& l,
-                       const std::string& where);
+  // Deltas fit ACC_W (validate_case() checks the end point against POS_W;
+  // a line stays in its box).
+  static void validate(const Command& c, const models::LatticePoint&, const CoreLimits& l,
+                       const std::string& where) {
+    validate_deltas<Adapter>(c, l, where);
+  }
   static Setup random_setup(Rng& rng) { return {rng.chance(1, 2)}; }
   static Command random_command(Rng& rng, const CoreLimits& l, const models::LatticePoint& at,
                                 const Command& previous);

@@ -67,21 +67,6 @@ uint64_t Adapter::work(const Command& c) {
       1);
 }
 
-void Adapter::validate(const Command& c, const models::LatticePoint& from, const CoreLimits& l,
-                       const std::string& where) {
-  (void)from;  // validate_case() checks the end point against POS_W; the line stays in its box
-  const int acc_w = l.param("ACC_W");
-  const int64_t max = (int64_t{1} << (acc_w - 1)) - 1, min = -max - 1;
-  for (int i = 0; i < l.axes; ++i) {
-    const int64_t d = c.delta[static_cast<size_t>(i)];
-    if (d > max || d < min)
-      throw UsageError(where + ": delta " + std::to_string(d) + " on axis " + std::to_string(i) +
-                       " is wider than the " + std::to_string(acc_w) + "-bit cmd_delta_i of " +
-                       l.variant + " (limit " + std::to_string(min) + ".." + std::to_string(max) +
-                       ")");
-  }
-}
-
 // Positions stay inside a window well within POS_W; long lines reach the
 // delta width where the window allows it (the narrow variants), else a few
 // thousand steps (a full 32-bit line would run for hours).

@@ -23,11 +23,6 @@
 #include "tb/stimulus/delta_commands.h"
 #include "tb/stimulus/rng.h"
 
-namespace hwinterp::tb {
-template <class A>
-class JobLine;
-}
-
 namespace hwinterp::tb::cores::ppc_line {
 
 struct Adapter {
@@ -103,8 +98,12 @@ struct Adapter {
   static uint64_t work(const Command& c);
 
   // --- stimulus ---------------------------------------------------------------
-  static void validate(const Command& c, const models::LatticePoint& from, const CoreLimits& l,
-                       const std::string& where);
+  // Deltas fit ACC_W (validate_case() checks the end point against POS_W;
+  // a line stays in its box).
+  static void validate(const Command& c, const models::LatticePoint&, const CoreLimits& l,
+                       const std::string& where) {
+    validate_deltas<Adapter>(c, l, where);
+  }
   static Setup random_setup(Rng&) { return {}; }
   // Every octant, axis-parallel and vertical lines, zero-length commands,
   // reversals, and long lines up to the widths.
