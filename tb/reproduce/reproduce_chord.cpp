@@ -7,6 +7,7 @@
 #include "models/paper_data_001_003_004.h"
 #include "models/ppc.h"
 #include "tb/reproduce/figure_rows.h"
+#include "tb/reproduce/hardware.h"
 #include "tb/reproduce/reproduce.h"
 
 namespace hwinterp::cli {
@@ -23,15 +24,24 @@ std::string point(const Vec2& p, const char* f) {
   return "(" + fmt(f, p.x()) + "," + fmt(f, p.y()) + ")";
 }
 
+// The paper's point list beside the model's and the hardware's (the core's
+// HLS and RTL faces in lockstep, checked against the model on every move).
 template <size_t N>
 void ppc_rows(FigureRows& rows, const std::string& name, const models::StepPath& path,
-              const std::array<std::array<int64_t, 2>, N>& paper) {
+              const std::array<std::array<int64_t, 2>, N>& paper, const std::string& core,
+              const std::string& job) {
   std::string ps, os;
   for (const auto& q : paper) ps += lattice({q[0], q[1]});
   for (const auto& m : path.moves) os += lattice(m.point);
   rows.add(name + ": steps", std::to_string(N), std::to_string(path.moves.size()),
            path.moves.size() == N);
   rows.add(name + ": points", ps, os, ps == os);
+  const HardwareRun hw = run_hardware(core, job);
+  const size_t moves = hw.result.visited.size() - 1;
+  rows.add(name + ": steps, hardware " + hw.variant, std::to_string(N), std::to_string(moves),
+           moves == N && hw.result.passed());
+  const std::string hs = moves_text(hw.result);
+  rows.add(name + ": points, hardware " + hw.variant, ps, hs, hs == ps && hw.result.passed());
 }
 
 PaperReproduction reproduce_chord() {
@@ -40,8 +50,9 @@ PaperReproduction reproduce_chord() {
 
   const models::StepPath ppc_l = models::ppc_line({0, 0}, {4, 3});
   const models::StepPath ppc_a = models::ppc_arc({0, 0}, {4, 0}, {0, 4}, true);
-  ppc_rows(rows, "PPC line (0,0)->(4,3)", ppc_l, pd::kPpcLine);
-  ppc_rows(rows, "PPC arc (4,0)->(0,4) CCW", ppc_a, pd::kPpcArc);
+  ppc_rows(rows, "PPC line (0,0)->(4,3)", ppc_l, pd::kPpcLine, "ppc_line", "line 4 3\n");
+  ppc_rows(rows, "PPC arc (4,0)->(0,4) CCW", ppc_a, pd::kPpcArc, "ppc_arc",
+           "start 4 0\narc 0 0 0 4 ccw\n");
 
   const models::ChordResult t1 = models::inscribed_chord_line({0, 0}, {4, 3}, 1.0);
   rows.add("Table I (r = 1): steps", std::to_string(pd::kChordTable1.size()),

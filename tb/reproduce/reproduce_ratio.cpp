@@ -13,6 +13,7 @@
 #include "models/paper_data_001_003_004.h"
 #include "models/ppc.h"
 #include "tb/reproduce/figure_rows.h"
+#include "tb/reproduce/hardware.h"
 #include "tb/reproduce/reproduce.h"
 
 namespace hwinterp::cli {
@@ -150,6 +151,21 @@ PaperReproduction reproduce_ratio() {
   const StepPath ppc1 = models::ppc_line({l1[0], l1[1]}, {l1[2], l1[3]});
   rows.add("PPC operations on line 1", std::to_string(pd::kPpcOperationsLine1),
            std::to_string(ppc1.operations), ppc1.operations == uint64_t(pd::kPpcOperationsLine1));
+  // The hardware: one operation (test, step, update) per engine tick, so the
+  // steps are the operations. At feed 1/2 with 1-clock pulse, space, setup
+  // and hold no operation ever waits for the step stage: the line takes
+  // exactly 2 clocks an operation (+ reset 2, take 1, load 1, the last
+  // pulse's fall 1, tail 2: tests/tb/ppc_line_test.cpp).
+  const HardwareRun hw1 = run_hardware(
+      "ppc_line", "start " + std::to_string(l1[0]) + " " + std::to_string(l1[1]) +
+                      "\nfeed 0.5\nstep_len 1\nstep_space 1\ndir_setup 1\ndir_hold 1\nline " +
+                      std::to_string(l1[2]) + " " + std::to_string(l1[3]) + "\n");
+  const uint64_t hw_ops = hw1.result.steps[0] + hw1.result.steps[1];
+  rows.add("PPC operations on line 1, hardware " + hw1.variant + " (engine ticks)",
+           std::to_string(pd::kPpcOperationsLine1), std::to_string(hw_ops),
+           hw_ops == uint64_t(pd::kPpcOperationsLine1) && hw1.result.passed());
+  rows.add("  its clocks at feed 1/2: 2 per operation + 7", std::to_string(2 * hw_ops + 7),
+           std::to_string(hw1.result.cycles), hw1.result.cycles == 2 * hw_ops + 7);
   const StepPath fr1 = models::fixed_ratio_line({l1[0], l1[1]}, {l1[2], l1[3]});
   rows.add("fixed ratio operations on line 1", "1", std::to_string(fr1.operations),
            fr1.operations == 1);
