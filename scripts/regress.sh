@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# The main job: set-up + build, then the dda_line co-simulation regression
-# (the eight test lines of 004_dc68f1177cad466f.txt with plain and half
-# preload, and a seeded random stream, on every variant, in the direct and the
-# SystemC lockstep modes). Prints the summary table; the JSON report lands in
-# build/reports/regress.json. Extra arguments go to `hwinterp regress`, e.g.
-#   scripts/regress.sh --random 2000 --seed 7
+# The main job: set-up + build, then the co-simulation regression of every
+# core and variant in cmake/cores.cmake (each core's regression cases: the
+# papers' figures, a seeded random stream, and the same stream with aborts and
+# feed holds), in the direct and the SystemC lockstep modes. Prints the summary
+# tables; the JSON report lands in build/reports/regress.json. Extra arguments
+# go to `hwinterp regress`, e.g.
+#   scripts/regress.sh --random 2000 --seed 7 --cores ppc_arc
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/build.sh"

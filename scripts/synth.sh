@@ -200,7 +200,7 @@ for variant in "${variants[@]}"; do
       synth_ice40 -top $core; tee -q -o $vdir/ice40_core_stat.json stat -json"
 
     # 3. The harness, generated from the core's ports, mapped once and placed per seed.
-    run_step ports "$vdir/ports.log" yosys -p "$read_rtl; $chparam $core; hierarchy -top $core;
+    run_step ports "$vdir/ports.log" yosys -p "$read_rtl; $chparam $core; hierarchy -top $core; proc;
       write_json $vdir/ports.json"
     run_step make_harness "$vdir/make_harness.log" sh -c \
       'python3 "$1" "$2" "$3" $4 >"$5"' _ "$root/scripts/synth/make_harness.py" "$vdir/ports.json" \
