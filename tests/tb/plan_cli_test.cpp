@@ -6,6 +6,7 @@
 #include <string>
 
 #include "run_hwinterp.h"
+#include "tb/report/json.h"
 
 namespace {
 
@@ -20,10 +21,16 @@ TEST(PlanCli, TranslatingCam1MatchesThePaper) {
   const std::string json = scratch_dir("plan_json") + "/plan.json";
   const CliResult r = plan("--law ms --tol 0.0005 --stroke 100 --lift 40 --json " + json);
   EXPECT_EQ(r.code, 0) << r.err;
-  const std::string j = slurp(json);
-  for (const char* key : {"\"segments\": 124", "\"error\":", "\"verified_max_error\":",
-                          "\"intervals\":", "\"seconds\":"})
-    EXPECT_NE(j.find(key), std::string::npos) << key << " in\n" << j;
+  const hwinterp::Json j = hwinterp::Json::parse(slurp(json));
+  EXPECT_EQ(j["segments"], 124);
+  // Achieved error e <= E, and the independent verifier agrees within 1e-9.
+  EXPECT_LE(j["error"].get<double>(), 0.0005);
+  EXPECT_NEAR(j["error"].get<double>(), 0.0004888, 1e-6);
+  EXPECT_NEAR(j["verified_max_error"].get<double>(), j["error"].get<double>(), 1e-9);
+  ASSERT_EQ(j["intervals"].size(), 2u);  // Cam 1: concave half, convex half
+  EXPECT_EQ(j["intervals"][0]["segments"].get<int>() + j["intervals"][1]["segments"].get<int>(),
+            124);
+  EXPECT_GT(j["seconds"].get<double>(), 0);
 }
 
 TEST(PlanCli, RotatingCam2WritesSegmentsAndErrors) {
