@@ -168,21 +168,6 @@ TYPED_TEST(PpcArcLockstep, LargestRadius) {
   for (const auto& x : res) EXPECT_GT(x.steps[0] + x.steps[1], 200u) << testing::describe(x);
 }
 
-TYPED_TEST(PpcArcLockstep, RandomStreamsClean) {
-  const CoreLimits l = limits_of<TypeParam>();
-  std::vector<Case<A>> cases;
-  for (uint64_t seed : {3u, 11u}) {
-    cases.push_back(random_case<A>(l, 300, seed));
-    cases.push_back(random_case<A>(l, 300, seed, {true, true}));
-  }
-  const auto r = testing::run_direct<testing::Variant<A, TypeParam>>(cases);
-  testing::expect_all_pass(r, 4);
-  for (const auto& c : r) EXPECT_GT(c.commands, 250u) << testing::describe(c);
-  EXPECT_FALSE(r[1].aborts.empty());
-  for (const auto& c : r)
-    for (const auto& a : c.aborts) EXPECT_TRUE(a.on_reference_path);
-}
-
 // Abort in the middle of an arc (in the arc phase and in a closing line):
 // no step on the abort edge, the position is a point of the reference path,
 // busy_o falls within max(step_len, 1) - 1 clocks.

@@ -86,21 +86,6 @@ TYPED_TEST(PpcLineLockstep, PaperLines) {
   }
 }
 
-TYPED_TEST(PpcLineLockstep, RandomStreamsClean) {
-  const CoreLimits l = limits_of<TypeParam>();
-  std::vector<Case<A>> cases;
-  for (uint64_t seed : {3u, 11u}) {
-    cases.push_back(random_case<A>(l, 300, seed));
-    cases.push_back(random_case<A>(l, 300, seed, {true, true}));
-  }
-  const auto r = testing::run_direct<testing::Variant<A, TypeParam>>(cases);
-  testing::expect_all_pass(r, 4);
-  for (const auto& c : r) EXPECT_GT(c.commands, 250u) << testing::describe(c);
-  EXPECT_FALSE(r[1].aborts.empty());
-  for (const auto& c : r)
-    for (const auto& a : c.aborts) EXPECT_TRUE(a.on_reference_path);
-}
-
 // Vertical and horizontal lines end exactly (the bare rule would step x
 // first on a vertical one); zero-length commands take one operation and
 // give their done_o (the scoreboard counts one per command); all back to
