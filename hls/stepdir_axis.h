@@ -18,12 +18,13 @@ class StepdirAxis {
   using tim_t = sc_dt::sc_uint<TIM_W>;
   using Settings = StepdirSettings<TIM_W>;
 
+  // The reset counts as the end of a pulse and a change of dir (see the RTL).
   void reset() {
     step_q_ = false;
     dir_q_ = false;
     high_q_ = 0;
-    low_q_ = kSat;
-    dir_age_q_ = kSat;
+    low_q_ = 1;
+    dir_age_q_ = 1;
   }
 
   // A pulse may start on the next clock (combinational, like ready_o).
@@ -72,8 +73,8 @@ class StepdirAxis {
   bool step_q_ = false;
   bool dir_q_ = false;
   tim_t high_q_ = 0;        // cycles step has been high, this one included
-  tim_t low_q_ = kSat;      // cycles step has been low (saturating)
-  tim_t dir_age_q_ = kSat;  // cycles dir has held its value (saturating)
+  tim_t low_q_ = 1;      // cycles step has been low (saturating)
+  tim_t dir_age_q_ = 1;  // cycles dir has held its value (saturating)
 };
 
 }  // namespace hwinterp::hls

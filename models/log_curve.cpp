@@ -66,8 +66,10 @@ void validate(const LogCurveParams& p) {
   const double ab = log_a(p) * log_b(p);
   const double estimate = p.x_end_mm * std::sqrt(1 + ab * ab) / p.dl_mm + 2;
   require(estimate <= static_cast<double>(kLogMaxPoints), [&] {
-    return "dl " + num(p.dl_mm) + " mm with x_end " + num(p.x_end_mm) + " mm needs about " +
-           num(std::ceil(estimate)) + " points (limit " + std::to_string(kLogMaxPoints) + ")";
+    return "the curve's slope at X = 0, a b = 2 tan(spiral " + num(p.spiral_deg) + " deg) / d1 " +
+           num(p.d1_mm) + " mm = " + num(ab) + ", makes dl " + num(p.dl_mm) + " mm to x_end " +
+           num(p.x_end_mm) + " mm about " + num(std::ceil(estimate)) + " points (limit " +
+           std::to_string(kLogMaxPoints) + ")";
   });
 }
 

@@ -11,6 +11,12 @@
 //
 // dir_o follows want_dir_i by itself as soon as the hold time allows it, so
 // a reversal costs only the hold + setup times, not a round trip.
+//
+// Reset (asynchronous) is not a safe stop: it ends a pulse at once and sets
+// dir_o to 0 whatever it was (abort_i of the core is the safe stop). The stage
+// then counts the reset as the end of a pulse and as a change of dir_o: the
+// first pulse after reset waits step_space and dir_setup, and a turn of dir_o
+// waits dir_hold, counted from the reset.
 // dir_o = 0 means positive motion, 1 negative (the sign bit of the delta).
 module stepdir_axis #(
   parameter int TIM_W = 16
@@ -81,8 +87,8 @@ module stepdir_axis #(
       step_q    <= 1'b0;
       dir_q     <= 1'b0;
       high_q    <= '0;
-      low_q     <= Sat;
-      dir_age_q <= Sat;
+      low_q     <= One;  // as if a pulse had just ended...
+      dir_age_q <= One;  // ...and dir_o had just changed
     end else begin
       step_q    <= step_d;
       dir_q     <= dir_d;

@@ -17,6 +17,8 @@
 //             and dir_o held for at least U cycles (never late, never early);
 //   a_turn    dir_o turns to want_dir_i on the clock after step_o has been low
 //             for at least H cycles while want_valid_i asks for the other way.
+// Reset counts as the end of a pulse and a change of dir, so every rule above
+// also holds for the first pulse after reset, measured from the reset.
 // Assumptions: reset in the first cycle only; the settings hold their value
 // after reset (run-time changes are not covered); the engine fires only a
 // ready axis (fire_i -> ready_o, as dda_line's stall logic guarantees).
@@ -65,8 +67,10 @@ module stepdir_axis_props #(
   assign setup = (dir_setup_i == '0) ? MonOne : MonW'(dir_setup_i);
   assign hold  = (dir_hold_i == '0) ? MonOne : MonW'(dir_hold_i);
 
-  // Previous-cycle outputs and counts; after reset, step and dir have been
-  // at their reset values "forever" (the stage's own counters start saturated).
+  // Previous-cycle outputs and counts; the reset counts as the end of a pulse
+  // and a change of dir (the header's promise): the first cycle after it is
+  // the first cycle low and with this dir (lo = dage = 1), so the
+  // previous-cycle ages restart at 0.
   logic            p_step, p_dir, p_fire, p_turn;
   logic [MonW-1:0] p_hi, p_lo, p_dage;
   logic [MonW-1:0] hi, lo, dage;  // this cycle, including this cycle
@@ -85,8 +89,8 @@ module stepdir_axis_props #(
       p_fire <= 1'b0;
       p_turn <= 1'b0;
       p_hi   <= '0;
-      p_lo   <= MonSat;
-      p_dage <= MonSat;
+      p_lo   <= '0;
+      p_dage <= '0;
     end else begin
       p_step <= step;
       p_dir  <= dir;

@@ -7,13 +7,18 @@
 
 namespace hwinterp::cli {
 
+// The whole text was read: strto* stop at a NUL byte inside a std::string,
+// which must not pass for its end ("7\0999" is not 7).
+static bool whole(const std::string& text, const char* end) {
+  return end != text.c_str() && end == text.c_str() + text.size();
+}
+
 int64_t parse_integer(const std::string& text, const std::string& what) {
   if (text.empty()) throw UsageError(what + ": empty value where an integer was expected");
   errno = 0;
   char* end = nullptr;
   const long long v = std::strtoll(text.c_str(), &end, 10);
-  if (end == text.c_str() || *end != '\0')
-    throw UsageError(what + ": '" + text + "' is not an integer");
+  if (!whole(text, end)) throw UsageError(what + ": '" + text + "' is not an integer");
   if (errno == ERANGE) throw UsageError(what + ": '" + text + "' does not fit in 64 bits");
   return v;
 }
@@ -23,8 +28,7 @@ double parse_real(const std::string& text, const std::string& what) {
   errno = 0;
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
-  if (end == text.c_str() || *end != '\0')
-    throw UsageError(what + ": '" + text + "' is not a number");
+  if (!whole(text, end)) throw UsageError(what + ": '" + text + "' is not a number");
   if (errno == ERANGE || !std::isfinite(v))
     throw UsageError(what + ": '" + text + "' is out of range");
   return v;
@@ -76,6 +80,10 @@ void Args::parse(int argc, char** argv, int first) {
       if (i + 1 >= argc) throw UsageError("option '--" + name + "' needs a value");
       values_[name] = argv[++i];
     }
+    // An empty value is never meant: an empty --vcd would silently trace
+    // nothing, an empty --json lose the report.
+    if (values_[name].empty())
+      throw UsageError("option '--" + name + "' needs a value, got an empty one");
   }
 }
 
@@ -127,7 +135,7 @@ uint64_t Args::seed(const std::string& name) const {
   errno = 0;
   char* end = nullptr;
   const unsigned long long v = std::strtoull(text.c_str(), &end, 10);
-  if (end == text.c_str() || *end != '\0' || errno == ERANGE)
+  if (!whole(text, end) || errno == ERANGE)
     throw UsageError("--" + name + ": '" + text + "' is not a 64-bit unsigned integer");
   return v;
 }
@@ -146,12 +154,16 @@ double Args::real(const std::string& name, double lo, double hi) const {
 std::vector<int64_t> Args::integer_list(const std::string& name) const {
   const std::string text = str(name);
   std::vector<int64_t> out;
-  std::string item;
-  std::istringstream is(text);
-  while (std::getline(is, item, ',')) out.push_back(parse_integer(item, "--" + name));
-  if (text.empty() || text.back() == ',')
-    throw UsageError("--" + name + ": '" + text + "' has an empty element");
-  return out;
+  size_t from = 0;
+  for (size_t n = 1;; ++n) {
+    const size_t comma = text.find(',', from);
+    const std::string item = text.substr(from, comma == std::string::npos ? comma : comma - from);
+    const std::string where = "--" + name + ": element " + std::to_string(n) + " of '" + text + "'";
+    if (item.empty()) throw UsageError(where + " is empty");
+    out.push_back(parse_integer(item, where));
+    if (comma == std::string::npos) return out;
+    from = comma + 1;
+  }
 }
 
 std::string Args::choice(const std::string& name, const std::vector<std::string>& allowed) const {
@@ -161,6 +173,23 @@ std::string Args::choice(const std::string& name, const std::vector<std::string>
   std::string list;
   for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
   throw UsageError("--" + name + ": unknown value '" + v + "' (one of: " + list + ")");
+}
+
+std::string one_line(const std::string& text) {
+  static const char* kHex = "0123456789abcdef";
+  std::string out;
+  for (const unsigned char c : text) {
+    if (c == '\n') {
+      out += "\\n";
+    } else if (c < 0x20 || c == 0x7f) {
+      out += "\\x";
+      out += kHex[c >> 4];
+      out += kHex[c & 15];
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out;
 }
 
 }  // namespace hwinterp::cli

@@ -14,10 +14,14 @@
 
 namespace hwinterp::cli {
 
+std::string one_line(const std::string& text);
+
 // Bad input: the message names the offending option and value. Exit code 2.
+// Control bytes in the message (a value holding a newline or a NUL) are
+// escaped here, so the message is always one printable line.
 class UsageError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit UsageError(const std::string& message) : std::runtime_error(one_line(message)) {}
 };
 
 class Args {
@@ -44,7 +48,8 @@ class Args {
   int64_t integer(const std::string& name, int64_t lo = INT64_MIN, int64_t hi = INT64_MAX) const;
   uint64_t seed(const std::string& name) const;
   double real(const std::string& name, double lo = -1e308, double hi = 1e308) const;
-  // Comma-separated integers ("0,0,20,40"); any element malformed -> UsageError.
+  // Comma-separated integers ("0,0,20,40"); an empty or malformed element ->
+  // UsageError naming its position.
   std::vector<int64_t> integer_list(const std::string& name) const;
   std::string choice(const std::string& name, const std::vector<std::string>& allowed) const;
 
@@ -69,5 +74,8 @@ class Args {
 // must be the number. `what` names the source in the error ("--line", "job.txt:3").
 int64_t parse_integer(const std::string& text, const std::string& what);
 double parse_real(const std::string& text, const std::string& what);
+
+// `text` with control bytes escaped (\n, \xNN): an error message names the
+// offending value on exactly one line, whatever the value holds.
 
 }  // namespace hwinterp::cli

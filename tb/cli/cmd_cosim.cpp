@@ -11,6 +11,7 @@
 #include "tb/cli/subcommand.h"
 #include "tb/lockstep/registry.h"
 #include "tb/report/cosim_report.h"
+#include "tb/report/output_path.h"
 
 namespace hwinterp::cli {
 
@@ -147,6 +148,15 @@ int run_cosim(int argc, char** argv, int first) {
   if (args.given("abort-at"))
     options.abort_at = static_cast<uint64_t>(args.integer("abort-at", 1, INT64_MAX));
 
+  // Every output can be written, or nothing runs.
+  for (const char* o : {"vcd", "fst", "path-csv", "dump-frames"}) {
+    if (!args.given(o)) continue;
+    try {
+      check_writable(args.str(o));
+    } catch (const std::exception& e) {
+      throw UsageError(std::string("--") + o + ": " + e.what());
+    }
+  }
   // Validates the stimulus and opens every output file before the run.
   const std::unique_ptr<tb::BenchRun> run = variant.from_args(args, options);
   std::cout << "hwinterp cosim: " << core->name << " (" << variant.limits.variant << "), mode "

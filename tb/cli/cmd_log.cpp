@@ -80,8 +80,10 @@ int run_log(int argc, char** argv, int first) {
   try {
     run = models::run_log_interpolation(p, even);
   } catch (const std::invalid_argument& e) {
-    // What is left after the per-option checks: dl against x-end, the point limit.
-    throw UsageError(std::string("--dl/--x-end: ") + e.what());
+    // What is left after the per-option checks: dl against x-end, and the
+    // point limit, which the spiral angle and d1 (the curve's slope) drive
+    // as much as dl and x-end.
+    throw UsageError(std::string("--spiral/--d1/--dl/--x-end: ") + e.what());
   }
   if (args.given("csv")) write_csv(args.str("csv"), run);
 

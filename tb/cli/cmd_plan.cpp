@@ -45,6 +45,7 @@ struct Cam {
   std::unique_ptr<models::PlanarCurve> curve;
   double outward_sign = 1;
   bool rotating = false;
+  std::string options;  // the options that shape the curve, as given ("--r0 40 --lift 30 ...")
   Json json = Json::object();
 };
 
@@ -77,6 +78,8 @@ Cam make_cam(const Args& args, models::CamLaw law) {
     cam.json["r0"] = r0;
     cam.json["lift"] = lift;
     cam.json["theta_d_deg"] = theta_d;
+    cam.options = "--r0 " + args.str("r0") + " --lift " + args.str("lift") + " --theta-d " +
+                  args.str("theta-d");
   } else {
     forbid("r0", "translating");
     forbid("theta-d", "translating");
@@ -87,6 +90,7 @@ Cam make_cam(const Args& args, models::CamLaw law) {
     cam.json["type"] = "translating";
     cam.json["stroke"] = stroke;
     cam.json["lift"] = lift;
+    cam.options = "--stroke " + args.str("stroke") + " --lift " + args.str("lift");
   }
   return cam;
 }
@@ -218,8 +222,9 @@ int run_plan(int argc, char** argv, int first) {
     poly = method == "optimal" ? run_optimal(*cam.curve, tol) : run_nishioka(*cam.curve, tol);
   } catch (const std::invalid_argument& e) {
     // The planner's refusals (tolerance too coarse or too fine for this
-    // curve, a curve it cannot split) are bad input.
-    throw UsageError("--tol " + args.str("tol") + ": " + e.what());
+    // curve, a curve it cannot split) are bad input: the tolerance and the
+    // options that shape the curve together.
+    throw UsageError("--tol " + args.str("tol") + " with " + cam.options + ": " + e.what());
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

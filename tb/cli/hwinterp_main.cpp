@@ -10,6 +10,7 @@
 #include <iostream>
 
 #include "tb/cli/subcommand.h"
+#include "tb/report/output_path.h"
 
 namespace hwinterp::cli {
 
@@ -20,9 +21,19 @@ std::vector<Subcommand>& subcommands() {
 
 bool parse_or_help(Args& args, int argc, char** argv, int first) {
   args.parse(argc, argv, first);
-  if (!args.help_requested()) return false;
-  std::cout << args.help_text();
-  return true;
+  if (args.help_requested()) {
+    std::cout << args.help_text();
+    return true;
+  }
+  // The report is written at the end: a path that cannot take it fails now.
+  if (args.given("json")) {
+    try {
+      check_writable(args.str("json"));
+    } catch (const std::exception& e) {
+      throw UsageError(std::string("--json: ") + e.what());
+    }
+  }
+  return false;
 }
 
 void maybe_write_json(const Args& args, const Json& report) {
@@ -64,15 +75,12 @@ extern "C" int sc_main(int argc, char** argv) {
     if (s.name != name) continue;
     try {
       return s.run(argc, argv, 2);
-    } catch (const UsageError& e) {
-      std::cerr << "hwinterp " << name << ": error: " << e.what() << "\n";
-      return kExitBadInput;
     } catch (const std::exception& e) {
-      std::cerr << "hwinterp " << name << ": error: " << e.what() << "\n";
+      std::cerr << "hwinterp " << name << ": error: " << one_line(e.what()) << "\n";
       return kExitBadInput;
     }
   }
-  std::cerr << "hwinterp: unknown command '" << name << "' (see hwinterp --help)\n";
+  std::cerr << "hwinterp: unknown command '" << one_line(name) << "' (see hwinterp --help)\n";
   return kExitBadInput;
 }
 

@@ -34,6 +34,7 @@ struct SubcommandRegistration {
 };
 
 // Parses argv into `args`; returns true when --help was asked (help printed).
+// Checks that a --json path can be written before anything runs.
 bool parse_or_help(Args& args, int argc, char** argv, int first);
 
 // Writes the --json report when asked. Throws UsageError when the file can't be written.

@@ -140,7 +140,9 @@ class Bench {
     OutPins seen = rtl;
     if (f.glitch_step_at == cycle_) seen.step ^= 1;
 
-    if (frame_.rst_n) {
+    if (!frame_.rst_n) {
+      for (auto& m : monitors_) m.reset(cycle_);
+    } else {
       for (int i = 0; i < limits_.axes; ++i)
         monitors_[static_cast<size_t>(i)].observe(cycle_, (seen.step >> i) & 1, (seen.dir >> i) & 1,
                                                   frame_.timing, r.timing_violations,

@@ -2,9 +2,11 @@
 
 namespace hwinterp::tb {
 
-void StepdirMonitor::reset() {
+void StepdirMonitor::reset(uint64_t cycle) {
   step_ = dir_ = false;
-  have_rise_ = have_fall_ = have_dir_change_ = false;
+  have_rise_ = false;
+  have_fall_ = have_dir_change_ = true;
+  fall_ = dir_change_ = cycle;
 }
 
 void StepdirMonitor::check(uint64_t cycle, const char* rule, uint64_t measured, uint32_t setting,

@@ -24,8 +24,11 @@ class StepdirMonitor {
   void observe(uint64_t cycle, bool step, bool dir, const StepdirTiming& timing,
                std::vector<TimingViolation>& kept, uint64_t& count);
 
-  // Back to the post-reset state (step low and dir settled for a long time).
-  void reset();
+  // rst_ni was low at edge `cycle`: the outputs are idle, and the reset
+  // counts as the end of a pulse and a change of dir (rtl/stepdir_axis.sv):
+  // the next pulse must keep step_space and dir_setup from it, a turn of dir
+  // dir_hold.
+  void reset(uint64_t cycle);
 
  private:
   void check(uint64_t cycle, const char* rule, uint64_t measured, uint32_t setting,
@@ -33,7 +36,7 @@ class StepdirMonitor {
 
   int axis_;
   bool step_ = false, dir_ = false;
-  // Cycle of the last edge; unset after reset (nothing to measure against).
+  // Cycle of the last edge; unset before the first reset (nothing to measure against).
   bool have_rise_ = false, have_fall_ = false, have_dir_change_ = false;
   uint64_t rise_ = 0, fall_ = 0, dir_change_ = 0;
 };

@@ -1,8 +1,11 @@
 #include "tb/report/trace.h"
 
+#include "tb/report/output_path.h"
+
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -25,16 +28,32 @@ Trace::Trace(const std::string& path, std::vector<PortSpec> inputs, int axes, in
     : path_(path), inputs_(std::move(inputs)), axes_(axes), pos_w_(pos_w), window_(window) {
   for (const auto& p : inputs_) input_count_ += p.count;
   if (input_count_ > kMaxInputs) throw std::logic_error("Trace: raise kMaxInputs");
-  vcd_path_ = ends_with(path, ".fst") ? path + ".tmp.vcd" : path;
+  // The last `window` clocks live in memory until the end: refuse a window
+  // that would take more than a quarter of this machine's memory, now.
+  if (window_) {
+    const uint64_t bytes = window_ * sizeof(Sample);
+    const uint64_t memory = static_cast<uint64_t>(sysconf(_SC_PHYS_PAGES)) *
+                            static_cast<uint64_t>(sysconf(_SC_PAGE_SIZE));
+    if (bytes > memory / 4)
+      throw std::runtime_error("--trace-window " + std::to_string(window_) + " would keep " +
+                               std::to_string(bytes >> 20) + " MiB of samples, more than a " +
+                               "quarter of this machine's " + std::to_string(memory >> 20) +
+                               " MiB");
+    ring_.reserve(window_);
+  }
+  // The trace is written under a partial name and renamed (or converted) only
+  // when complete; the final name must be writable before the run starts.
+  check_writable(path_);
+  vcd_path_ = path + (ends_with(path, ".fst") ? ".partial.vcd" : ".partial");
   vcd_ = std::make_unique<VcdWriter>(vcd_path_);
   declare();
 }
 
 Trace::~Trace() {
-  try {
-    close();
-  } catch (...) {
-    // Destructors must not throw; close() explicitly to see errors.
+  // Not closed: the run did not end normally. Leave no partial file behind.
+  if (!closed_) {
+    vcd_.reset();
+    std::remove(vcd_path_.c_str());
   }
 }
 
@@ -90,17 +109,32 @@ void Trace::record(uint64_t cycle, const uint64_t* in, const OutPins& hls, const
     write(s);
     return;
   }
-  buffer_.push_back(s);
-  if (buffer_.size() > window_) buffer_.pop_front();
+  if (ring_.size() < window_) {
+    ring_.push_back(s);
+  } else {
+    ring_[next_] = s;
+    next_ = (next_ + 1) % window_;
+  }
 }
 
 void Trace::close() {
   if (closed_) return;
   closed_ = true;
-  for (const auto& s : buffer_) write(s);
-  buffer_.clear();
-  vcd_->close();
-  if (vcd_path_ != path_) {
+  // The ring, oldest first.
+  for (size_t k = 0; k < ring_.size(); ++k) write(ring_[(next_ + k) % ring_.size()]);
+  ring_.clear();
+  try {
+    vcd_->close();
+  } catch (...) {
+    std::remove(vcd_path_.c_str());
+    throw;
+  }
+  if (!ends_with(path_, ".fst")) {
+    if (std::rename(vcd_path_.c_str(), path_.c_str()) != 0) {
+      std::remove(vcd_path_.c_str());
+      throw std::runtime_error("cannot write trace '" + path_ + "'");
+    }
+  } else {
     // Run vcd2fst directly (no shell): any path works, quotes included.
     std::string in = vcd_path_, out = path_, tool = "vcd2fst";
     char* argv[] = {tool.data(), in.data(), out.data(), nullptr};

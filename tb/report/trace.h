@@ -1,11 +1,14 @@
 // Cycle trace of a co-simulation, for any core: the inputs (scope tb) and
 // both DUTs' outputs (scopes tb.hls, tb.rtl) in one VCD, either the whole run
 // or only the last N cycles before the run ended (the window around a first
-// mismatch). A .fst path is written as VCD and converted with gtkwave's vcd2fst.
+// mismatch, kept in a ring allocated up front and refused when it would take
+// more than a quarter of the machine's memory). A .fst path is written as VCD
+// and converted with gtkwave's vcd2fst. The file appears under its name only
+// when complete (written as NAME.partial and renamed); a run that does not
+// end normally leaves no file.
 #pragma once
 
 #include <cstdint>
-#include <deque>
 #include <memory>
 #include <string>
 #include <vector>
@@ -28,8 +31,8 @@ class Trace {
   ~Trace();
   // `in`: one value per input element, in port order.
   void record(uint64_t cycle, const uint64_t* in, const OutPins& hls, const OutPins& rtl);
-  // Writes what is buffered and converts to FST when asked. Throws
-  // std::runtime_error when the file cannot be written or converted.
+  // Writes what is buffered, then renames the file into place or converts it
+  // to FST. Throws std::runtime_error when it cannot be written or converted.
   void close();
 
  private:
@@ -46,7 +49,8 @@ class Trace {
   int axes_, pos_w_, input_count_ = 0;
   uint64_t window_;
   std::unique_ptr<VcdWriter> vcd_;
-  std::deque<Sample> buffer_;
+  std::vector<Sample> ring_;  // the last window_ samples; ring_[next_] is the oldest when full
+  size_t next_ = 0;
   bool closed_ = false;
   // Signal ids.
   int clk_ = 0;

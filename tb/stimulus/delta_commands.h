@@ -77,6 +77,7 @@ template <class A>
 Case<A> delta_line_from_option(const cli::Args& args, const CoreLimits& l,
                                const RunSettings<A>& settings) {
   const std::vector<int64_t> v = args.integer_list("line");
+  for (const int64_t x : v) check_coordinate(x, "--line");
   if (v.size() < 2 || v.size() % 2)
     throw cli::UsageError("--line: '" + args.str("line") +
                           "' needs start and end coordinates (2k numbers)");

@@ -76,8 +76,15 @@ std::string point_text(const models::LatticePoint& p) {
 
 namespace hwinterp::tb {
 
+void check_coordinate(int64_t v, const std::string& what) {
+  if (v > kCoordinateLimit || v < -kCoordinateLimit)
+    throw cli::UsageError(what + ": coordinate " + std::to_string(v) +
+                          " is outside +-2^61 (the lattice the testbench works on)");
+}
+
 models::LatticePoint pad_point(const CoreLimits& limits, const std::vector<int64_t>& v,
                                const std::string& what) {
+  for (const int64_t x : v) check_coordinate(x, what);
   if (v.empty() || static_cast<int>(v.size()) > limits.axes)
     throw cli::UsageError(what + ": " + std::to_string(v.size()) + " coordinates given, " +
                           limits.variant + " has " + std::to_string(limits.axes) + " axes");

@@ -37,9 +37,16 @@ std::string point_text(const models::LatticePoint& p);
 
 namespace hwinterp::tb {
 
+// Every lattice coordinate, given or reached, stays within +-2^61, so that the
+// difference or sum of two of them never overflows 64 bits (an end minus a
+// start, a position plus a delta).
+inline constexpr int64_t kCoordinateLimit = int64_t{1} << 61;
+// Throws cli::UsageError naming `what` and `v` when |v| > kCoordinateLimit.
+void check_coordinate(int64_t v, const std::string& what);
+
 // Leading-axis coordinates padded with zeros to the variant's axis count;
 // throws cli::UsageError (`what`: where they came from) when there are none
-// or more than the axes.
+// or more than the axes, or one is past kCoordinateLimit.
 models::LatticePoint pad_point(const CoreLimits& limits, const std::vector<int64_t>& v,
                                const std::string& what);
 

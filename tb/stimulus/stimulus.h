@@ -129,6 +129,7 @@ void validate_case(const Case<A>& c, const CoreLimits& limits) {
   const std::string name = "case '" + c.name + "'";
   if (static_cast<int>(c.start.size()) != limits.axes)
     throw cli::UsageError(name + ": start has " + std::to_string(c.start.size()) + " axes");
+  for (const int64_t v : c.start) check_coordinate(v, name + ": start");
   validate_feed_and_timing(c.settings.feed, c.settings.timing, limits, name);
   uint64_t feed = c.settings.feed;
   models::LatticePoint at = c.start;
@@ -210,10 +211,12 @@ class JobLine {
   const CoreLimits& limits;
 
   const models::LatticePoint& at() const { return at_; }
-  // Appends a command; the planned position follows it.
+  // Appends a command; the planned position follows it (and must stay on the
+  // lattice the testbench works on).
   void command(const typename A::Command& cmd) {
     case_.items.push_back(command_item<A>(cmd, line_));
     A::apply(cmd, at_);
+    for (const int64_t v : at_) check_coordinate(v, where + ": the position this reaches");
   }
   // The setup in force from this line on: the case's reset settings before
   // its first command, otherwise a settings item here (consecutive setting
@@ -232,14 +235,17 @@ class JobLine {
     }
     return case_.items.back().settings;
   }
-  // Words [first, first + n) as integers (n = 0: to the end).
+  // Words [first, first + n) as lattice coordinates (n = 0: to the end).
   std::vector<int64_t> integers(size_t first, size_t n = 0) const {
     std::vector<int64_t> out;
     const size_t end = n ? first + n : words.size();
     if (end > words.size())
       throw cli::UsageError(where + ": '" + words[0] + "' needs " + std::to_string(end - 1) +
                             " values");
-    for (size_t i = first; i < end; ++i) out.push_back(cli::parse_integer(words[i], where));
+    for (size_t i = first; i < end; ++i) {
+      out.push_back(cli::parse_integer(words[i], where));
+      check_coordinate(out.back(), where);
+    }
     return out;
   }
   // Leading-axis coordinates from word `first` to the end, padded to the axes.

@@ -61,5 +61,25 @@ TEST(StepdirMonitor, ZeroSettingsActAsOne) {
   EXPECT_EQ(play("00010", "00011", StepdirTiming{0, 0, 0, 0}).kept.at(0).rule, "dir_setup");
 }
 
+// A reset counts as the end of a pulse and a change of dir: the first pulse
+// after it keeps dir_setup (and step_space) from the reset cycle.
+TEST(StepdirMonitor, FirstPulseAfterResetKeepsSetupFromTheReset) {
+  const StepdirTiming t{1, 1, 5, 1};
+  for (const uint64_t rise : {14u, 15u}) {  // reset at 10: 4 clocks is short, 5 enough
+    StepdirMonitor m(0);
+    Findings f;
+    m.reset(10);
+    for (uint64_t c = 11; c <= 16; ++c) m.observe(c, c == rise, false, t, f.kept, f.count);
+    if (rise == 14) {
+      ASSERT_EQ(f.count, 1u);
+      EXPECT_EQ(f.kept[0].rule, "dir_setup");
+      EXPECT_EQ(f.kept[0].measured, 4u);
+      EXPECT_EQ(f.kept[0].required, 5u);
+    } else {
+      EXPECT_EQ(f.count, 0u);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace hwinterp::tb

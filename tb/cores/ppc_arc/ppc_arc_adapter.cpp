@@ -237,7 +237,10 @@ std::vector<Case<Adapter>> Adapter::cases_from_options(const cli::Args& args, co
     throw UsageError("--arc: '" + text + "' needs CX,CY,X0,Y0,X1,Y1,cw|ccw (7 fields, " +
                      std::to_string(f.size()) + " given)");
   std::vector<int64_t> v;
-  for (size_t i = 0; i < 6; ++i) v.push_back(cli::parse_integer(f[i], "--arc"));
+  for (size_t i = 0; i < 6; ++i) {
+    v.push_back(cli::parse_integer(f[i], "--arc"));
+    check_coordinate(v.back(), "--arc");
+  }
   if (f[6] != "cw" && f[6] != "ccw")
     throw UsageError("--arc: direction must be 'cw' or 'ccw', not '" + f[6] + "'");
   return {arc_case(l, "arc", {v[0], v[1]}, {v[2], v[3]}, {v[4], v[5]}, f[6] == "ccw", settings)};
