@@ -86,22 +86,28 @@ endfunction()
 function(hwinterp_finish_variants)
   get_property(cores GLOBAL PROPERTY HWINTERP_CORES)
   list(REMOVE_DUPLICATES cores)
-  set(body "// Generated from cmake/cores.cmake; do not edit.\n#pragma once\n\n")
+  set(configs "// Generated from cmake/cores.cmake; do not edit.\n#pragma once\n\n")
+  set(body "// Generated from cmake/cores.cmake; do not edit.\n#pragma once\n\n#include \"hwinterp_configs.h\"\n")
   set(adapters "// Generated from cmake/cores.cmake; do not edit.\n#pragma once\n\n")
   set(xs "")
   set(core_xs "")
   foreach(core IN LISTS cores)
     get_property(vs GLOBAL PROPERTY HWINTERP_CORE_${core}_VARIANTS)
     foreach(v IN LISTS vs)
+      string(APPEND configs "#include \"${v}_cfg.h\"\n")
       string(APPEND body "#include \"${v}_rtl.h\"\n")
       string(APPEND xs " X(${core}, ${v})")
     endforeach()
     string(APPEND adapters "#include \"tb/cores/${core}/${core}_adapter.h\"\n")
     string(APPEND core_xs " X(${core})")
   endforeach()
-  string(APPEND body "\n// X(core, variant) for every variant, in cores.cmake order.\n"
+  string(APPEND configs "\n// X(core, variant) for every variant, in cores.cmake order.\n"
     "#define HWINTERP_VARIANTS(X)${xs}\n"
     "// X(core) for every core, in cores.cmake order.\n#define HWINTERP_CORES(X)${core_xs}\n")
+  # hwinterp_configs.h: every variant's configuration and the X-macros (no
+  # Verilated code: what the fuzzers and the models need); hwinterp_variants.h
+  # adds the Verilated classes of every variant.
+  hwinterp_write_generated(hwinterp_configs.h "${configs}")
   hwinterp_write_generated(hwinterp_variants.h "${body}")
   hwinterp_write_generated(hwinterp_core_adapters.h "${adapters}")
   file(COPY_FILE ${HWINTERP_GENERATED_DIR}/variants.txt.in

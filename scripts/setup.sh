@@ -8,6 +8,7 @@ packages=(
   libsystemc-dev verilator libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev
   yosys nextpnr-ice40 fpga-icestorm fpga-icestorm-chipdb iverilog gtkwave
   python3 python3-matplotlib z3 nlohmann-json3-dev
+  clang libclang-rt-14-dev parallel
 )
 
 missing=()

@@ -1,16 +1,21 @@
 // hwinterp regress: the project's main job. For every core and variant
 // (cmake/cores.cmake), in both lockstep modes: the core's regression cases
 // (the papers' figures, a seeded random stream, a random stream with aborts
-// and feed holds). Prints a table per case and per run, writes the JSON
-// report, exits 1 if anything failed.
+// and feed holds). Prints a table per case and per run, writes the JSON (and
+// JUnit) report, exits 1 if anything failed.
+//
+// --shard K/N runs a deterministic slice: the cases of all runs numbered in
+// order (core, variant, mode, case), those whose number is K-1 modulo N.
+// `hwinterp merge` joins the shards' reports into the unsharded run's report.
 #include <chrono>
+#include <fstream>
 #include <iostream>
 #include <memory>
 
 #include "tb/cli/subcommand.h"
-#include "tb/cli/text_table.h"
 #include "tb/lockstep/registry.h"
 #include "tb/report/cosim_report.h"
+#include "tb/report/regress_report.h"
 
 namespace hwinterp::cli {
 
@@ -18,6 +23,7 @@ namespace {
 
 struct Run {
   std::string core, variant, mode;
+  uint64_t first_case;  // the number of the run's first case, all runs numbered in order
   std::unique_ptr<tb::BenchRun> bench;
   double seconds = 0;
 };
@@ -40,22 +46,43 @@ std::vector<std::string> split_list(const std::string& text) {
   return out;
 }
 
+// "K/N" with 1 <= K <= N.
+std::pair<uint64_t, uint64_t> parse_shard(const std::string& text) {
+  const auto slash = text.find('/');
+  if (slash == std::string::npos) throw UsageError("--shard: '" + text + "' is not K/N (e.g. 2/4)");
+  const int64_t k = parse_integer(text.substr(0, slash), "--shard " + text + ": K");
+  const int64_t n = parse_integer(text.substr(slash + 1), "--shard " + text + ": N");
+  if (n < 1 || k < 1 || k > n) throw UsageError("--shard: '" + text + "' needs 1 <= K <= N");
+  return {static_cast<uint64_t>(k), static_cast<uint64_t>(n)};
+}
+
 int run_regress(int argc, char** argv, int first) {
   Args args("regress",
             "The main regression: for every core and variant (or those given) and both\n"
             "lockstep modes, the core's regression cases: the papers' figures, a seeded\n"
             "random stream, and a random stream with aborts and feed holds. Summary\n"
-            "tables on stdout, JSON with --json.\nCores: " +
+            "tables on stdout, JSON with --json, JUnit with --junit.\nCores: " +
                 tb::core_list());
   args.option("cores", "LIST", "comma-separated cores (default: all)")
       .option("random", "N", "commands in each random stream (0: none)", "300")
       .option("seed", "S", "seed of the random streams", "1")
       .option("modes", "LIST", "comma-separated lockstep modes", "direct,systemc")
+      .option("shard", "K/N", "run the K-th of N deterministic slices (hwinterp merge joins them)")
+      .option("junit", "FILE", "write a JUnit report (a testcase per case)")
       .option("progress", "N", "progress line every N clock edges per run (0: none)", "2000000");
   if (parse_or_help(args, argc, argv, first)) return kExitOk;
   const uint64_t commands = static_cast<uint64_t>(args.integer("random", 0, 10000000));
   const uint64_t seed = args.seed("seed");
   const uint64_t progress = static_cast<uint64_t>(args.integer("progress", 0, INT64_MAX));
+  const auto [shard_k, shard_n] =
+      args.given("shard") ? parse_shard(args.str("shard")) : std::pair<uint64_t, uint64_t>{1, 1};
+  if (args.given("junit")) {
+    try {
+      check_writable(args.str("junit"));
+    } catch (const std::exception& e) {
+      throw UsageError(std::string("--junit: ") + e.what());
+    }
+  }
   std::vector<const tb::CoreEntry*> cores;
   if (args.given("cores")) {
     for (const auto& name : split_list(args.str("cores"))) cores.push_back(&tb::find_core(name));
@@ -75,9 +102,11 @@ int run_regress(int argc, char** argv, int first) {
   if (!direct && !systemc) throw UsageError("--modes: '" + args.str("modes") + "' names no mode");
 
   std::cout << "hwinterp regress: " << cores.size() << " core(s), random streams of " << commands
-            << " commands, seed " << seed << "\n"
-            << std::flush;
+            << " commands, seed " << seed;
+  if (shard_n > 1) std::cout << ", shard " << shard_k << " of " << shard_n;
+  std::cout << "\n" << std::flush;
   std::vector<Run> runs;
+  uint64_t number = 0;  // cases numbered across all runs, in order
   for (const tb::CoreEntry* core : cores) {
     for (const tb::VariantEntry& v : core->variants) {
       for (const char* mode : {"direct", "systemc"}) {
@@ -88,7 +117,13 @@ int run_regress(int argc, char** argv, int first) {
         o.mode = mode;
         o.seed = seed;
         o.progress_every = progress;
-        runs.push_back({core->name, v.limits.variant, mode, v.regression(commands, seed, o)});
+        const uint64_t base = number;
+        number += v.regression_size(commands);
+        auto keep = [base, k = shard_k, n = shard_n](uint64_t i) {
+          return (base + i) % n == k - 1;
+        };
+        if (auto run = v.regression(commands, seed, o, keep))
+          runs.push_back({core->name, v.limits.variant, mode, base, std::move(run)});
       }
     }
   }
@@ -115,40 +150,24 @@ int run_regress(int argc, char** argv, int first) {
   }
 
   std::vector<tb::CaseResult> all;
-  Json report;
-  report["seed"] = seed;
-  report["random_commands"] = commands;
-  Json jcores = Json::object();
-  Json jruns = Json::array();
-  TextTable totals({"core", "variant", "mode", "cases", "cycles", "seconds", "cycles/s", "result"});
-  bool ok = true;
+  std::vector<tb::RegressRun> report_runs;
   for (const auto& r : runs) {
     const auto& res = r.bench->results();
-    const bool pass = tb::all_passed(res);
-    ok = ok && pass;
     all.insert(all.end(), res.begin(), res.end());
-    Json j = tb::aggregate_json(res);
-    j["seconds"] = r.seconds;
-    const double rate = r.seconds > 0 ? static_cast<double>(r.bench->cycles()) / r.seconds : 0;
-    j["cycles_per_second"] = rate;
-    jruns.push_back(j);
-    Json& jc = jcores[r.core];
-    if (jc.is_null()) jc = {{"passed", true}, {"runs", 0}, {"cases", 0}, {"cycles", 0}};
-    jc["passed"] = jc["passed"].get<bool>() && pass;
-    jc["runs"] = jc["runs"].get<uint64_t>() + 1;
-    jc["cases"] = jc["cases"].get<uint64_t>() + res.size();
-    jc["cycles"] = jc["cycles"].get<uint64_t>() + r.bench->cycles();
-    totals.add_row({r.core, r.variant, r.mode, std::to_string(res.size()),
-                    std::to_string(r.bench->cycles()), fmt("%.2f", r.seconds), fmt("%.3g", rate),
-                    pass ? "pass" : "FAIL"});
+    tb::RegressRun rr{r.core, r.variant, r.mode, r.first_case, r.seconds, {}};
+    for (const auto& c : res) rr.cases.push_back(c.to_json());
+    report_runs.push_back(std::move(rr));
   }
-  report["cores"] = std::move(jcores);
-  report["runs"] = std::move(jruns);
-  report["passed"] = ok;
-  std::cout << "\n" << tb::case_table(all) << "\n" << totals.render() << tb::failure_details(all);
+  const Json report = tb::regress_report(report_runs, seed, commands,
+                                         {std::to_string(shard_k) + "/" + std::to_string(shard_n)});
+  const bool ok = report["passed"].get<bool>();
+  std::cout << "\n"
+            << tb::case_table(all) << "\n"
+            << tb::runs_table(report) << tb::failure_details(all);
   std::cout << "(SystemC runs share one elaboration: their seconds are the elaboration's)\n";
   std::cout << (ok ? "PASS" : "FAIL") << "\n";
   maybe_write_json(args, report);
+  if (args.given("junit")) write_text_file(args.str("junit"), tb::junit_xml(report), "--junit");
   return ok ? kExitOk : kExitCheckFailed;
 }
 

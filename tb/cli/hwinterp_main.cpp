@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <fstream>
 #include <iostream>
 
 #include "tb/cli/subcommand.h"
@@ -43,6 +44,13 @@ void maybe_write_json(const Args& args, const Json& report) {
   } catch (const std::exception& e) {
     throw UsageError(std::string("--json: ") + e.what());
   }
+}
+
+void write_text_file(const std::string& path, const std::string& text, const std::string& option) {
+  std::ofstream out(path);
+  out << text;
+  out.close();
+  if (!out) throw UsageError(option + ": error writing '" + path + "'");
 }
 
 namespace {

@@ -10,6 +10,7 @@
 
 #include "tb/cli/cli_args.h"
 #include "tb/report/json.h"
+#include "tb/report/output_path.h"
 
 namespace hwinterp::cli {
 
@@ -39,6 +40,10 @@ bool parse_or_help(Args& args, int argc, char** argv, int first);
 
 // Writes the --json report when asked. Throws UsageError when the file can't be written.
 void maybe_write_json(const Args& args, const Json& report);
+
+// Writes `text` to `path`; throws UsageError naming `option` and the path when
+// it cannot be written (a failed flush included).
+void write_text_file(const std::string& path, const std::string& text, const std::string& option);
 
 }  // namespace hwinterp::cli
 

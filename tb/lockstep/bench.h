@@ -210,6 +210,7 @@ class Bench {
     r.core = limits_.core;
     r.variant = limits_.variant;
     r.name = c.name;
+    r.ordinal = c.ordinal;
     r.mode = options_.mode;
     r.seed = options_.seed;
     r.commands_offered = command_count(c);

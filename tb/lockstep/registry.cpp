@@ -7,6 +7,7 @@
 #include "hwinterp_variants.h"
 #include "tb/lockstep/direct.h"
 #include "tb/lockstep/systemc.h"
+#include "tb/stimulus/from_args.h"
 
 namespace hwinterp::tb {
 
@@ -44,52 +45,30 @@ std::unique_ptr<BenchRun> make_run(const CoreLimits& l, std::vector<Case<A>> cas
   }
 }
 
-// Settings from the shared flags and the core's own.
-template <class A>
-RunSettings<A> settings_from_args(const cli::Args& args, const CoreLimits& l) {
-  RunSettings<A> s = default_settings<A>(l);
-  if (args.given("feed")) {
-    s.feed = parse_feed(args.str("feed"), l, "--feed");
-    if (s.feed == 0) throw cli::UsageError("--feed: 0 holds the move forever; give a feed > 0");
-  }
-  const auto tmax = static_cast<int64_t>(l.tim_max());
-  if (args.given("step-len"))
-    s.timing.step_len = static_cast<uint32_t>(args.integer("step-len", 0, tmax));
-  if (args.given("step-space"))
-    s.timing.step_space = static_cast<uint32_t>(args.integer("step-space", 0, tmax));
-  if (args.given("dir-setup"))
-    s.timing.dir_setup = static_cast<uint32_t>(args.integer("dir-setup", 0, tmax));
-  if (args.given("dir-hold"))
-    s.timing.dir_hold = static_cast<uint32_t>(args.integer("dir-hold", 0, tmax));
-  A::setup_from_options(args, s.setup);
-  validate_feed_and_timing(s.feed, s.timing, l, "command line");
-  return s;
-}
-
 template <class A, class Cfg>
 VariantEntry make_variant() {
   VariantEntry v;
   v.limits = limits_of<Cfg>();
   v.from_args = [l = v.limits](const cli::Args& args, const BenchOptions& options) {
-    const RunSettings<A> settings = settings_from_args<A>(args, l);
-    std::vector<Case<A>> cases;
-    if (args.given("job")) {
-      cases = parse_job<A>(args.str("job"), l, settings);
-    } else if (args.given("random")) {
-      cases.push_back(random_case<A>(l, static_cast<uint64_t>(args.integer("random", 1, 100000000)),
-                                     options.seed,
-                                     {args.given("with-aborts"), args.given("with-holds")}));
-    } else {
-      cases = A::cases_from_options(args, l, settings);
-    }
-    return make_run<A, Cfg>(l, std::move(cases), options);
+    return make_run<A, Cfg>(l, cases_from_args<A>(args, l, options.seed), options);
   };
   v.from_job = [l = v.limits](const std::string& job, const BenchOptions& options) {
     std::istringstream in(job);
     return make_run<A, Cfg>(l, parse_job<A>(in, "job", l, default_settings<A>(l)), options);
   };
-  v.regression = [l = v.limits](uint64_t commands, uint64_t seed, const BenchOptions& options) {
-    return make_run<A, Cfg>(l, A::regression_cases(l, commands, seed), options);
+  v.regression = [l = v.limits](uint64_t commands, uint64_t seed, const BenchOptions& options,
+                                 const std::function<bool(uint64_t)>& keep)
+      -> std::unique_ptr<BenchRun> {
+    std::vector<Case<A>> all = A::regression_cases(l, commands, seed), kept;
+    for (uint64_t i = 0; i < all.size(); ++i) {
+      all[i].ordinal = i;
+      if (!keep || keep(i)) kept.push_back(std::move(all[i]));
+    }
+    if (kept.empty()) return nullptr;
+    return make_run<A, Cfg>(l, std::move(kept), options);
+  };
+  v.regression_size = [l = v.limits](uint64_t commands) {
+    return static_cast<uint64_t>(A::regression_cases(l, commands, 0).size());
   };
   return v;
 }
@@ -146,23 +125,9 @@ std::string core_list() {
 }
 
 const VariantEntry& CoreEntry::select(const cli::Args& args) const {
-  std::vector<std::string> names;
-  for (const auto& v : variants)
-    names.push_back(v.limits.variant + " (" + std::to_string(v.limits.axes) + " axes)");
-  if (args.given("variant")) {
-    for (const auto& v : variants)
-      if (v.limits.variant == args.str("variant")) return v;
-    throw cli::UsageError("--variant: " + name + " has no variant '" + args.str("variant") +
-                          "' (there are: " + join(names) + ")");
-  }
-  if (args.given("axes")) {
-    const int64_t axes = args.integer("axes", 1, kMaxAxes);
-    for (const auto& v : variants)
-      if (v.limits.axes == axes) return v;
-    throw cli::UsageError("--axes: no " + name + " variant has " + std::to_string(axes) +
-                          " axes (there are: " + join(names) + ")");
-  }
-  return variants.front();
+  std::vector<CoreLimits> limits;
+  for (const auto& v : variants) limits.push_back(v.limits);
+  return variants[select_variant(name, limits, args)];
 }
 
 void run_systemc(const std::vector<BenchRun*>& runs) {

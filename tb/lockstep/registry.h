@@ -54,9 +54,15 @@ struct VariantEntry {
   // A job given as text (the job-file format), default settings: how code
   // that knows a core only by name (the paper reproductions) runs it.
   std::function<std::unique_ptr<BenchRun>(const std::string& job, const BenchOptions&)> from_job;
-  // The core's regression cases with a random stream of `commands`.
-  std::function<std::unique_ptr<BenchRun>(uint64_t commands, uint64_t seed, const BenchOptions&)>
+  // The core's regression cases with random streams of `commands`, each
+  // numbered by its position in the variant's list (Case::ordinal); `keep`
+  // picks some by that number (all when empty; regress --shard). Null when
+  // `keep` keeps none.
+  std::function<std::unique_ptr<BenchRun>(uint64_t commands, uint64_t seed, const BenchOptions&,
+                                          const std::function<bool(uint64_t)>& keep)>
       regression;
+  // How many regression cases the variant has with random streams of `commands`.
+  std::function<uint64_t(uint64_t commands)> regression_size;
 };
 
 struct CoreEntry {

@@ -22,6 +22,9 @@ std::string failure_details(const std::vector<CaseResult>& results);
 // the worst path error, end positions of the last case, the first abort),
 // plus "cases".
 Json aggregate_json(const std::vector<CaseResult>& results);
+// The same from the cases' JSON (CaseResult::to_json), e.g. read back from
+// the reports of regression shards.
+Json aggregate_json(const std::vector<Json>& cases);
 
 bool all_passed(const std::vector<CaseResult>& results);
 

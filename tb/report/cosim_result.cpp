@@ -19,6 +19,7 @@ Json CaseResult::to_json() const {
   j["core"] = core;
   j["variant"] = variant;
   j["case"] = name;
+  j["ordinal"] = ordinal;
   j["mode"] = mode;
   j["seed"] = seed;
   j["passed"] = passed();

@@ -47,6 +47,7 @@ Json to_json(const AbortRecord& a);
 
 struct CaseResult {
   std::string core, variant, name, mode;
+  uint64_t ordinal = 0;  // the case's position in its run's full list (Case::ordinal)
   uint64_t seed = 0;
   uint64_t cycles = 0;    // clock edges simulated in this case, reset included
   uint64_t commands = 0;  // commands taken by the core

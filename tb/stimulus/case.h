@@ -36,6 +36,7 @@ struct Item {
 template <class A>
 struct Case {
   std::string name;
+  uint64_t ordinal = 0;        // its position in its run's full list (regress --shard keeps a subset)
   models::LatticePoint start;  // absolute position the core's counters start from
   RunSettings<A> settings;     // in force from reset
   std::vector<Item<A>> items;

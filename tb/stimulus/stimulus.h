@@ -279,8 +279,11 @@ std::vector<Case<A>> parse_job(std::istream& in, const std::string& path, const 
   std::vector<Case<A>> cases;
   models::LatticePoint at;
   auto new_case = [&](const std::string& name) {
-    cases.push_back(
-        {name, models::LatticePoint(static_cast<size_t>(limits.axes), 0), defaults, {}});
+    Case<A> c;
+    c.name = name;
+    c.start.assign(static_cast<size_t>(limits.axes), 0);
+    c.settings = defaults;
+    cases.push_back(std::move(c));
     at = cases.back().start;
   };
   std::string text;

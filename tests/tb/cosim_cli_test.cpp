@@ -246,4 +246,60 @@ TEST(RegressCli, SmallRegressionPassesAndReportsEveryCore) {
   }
 }
 
+// regress --shard K/N: the union of the N slices is the unsharded run, case
+// for case; merging them gives its report (timings aside) and its JUnit.
+// merge refuses a shard given twice and reports a missing one.
+Json without_timings(const Json& j) {
+  if (j.is_object()) {
+    Json out = Json::object();
+    for (const auto& [k, v] : j.items())
+      if (k != "seconds" && k != "cycles_per_second" && k != "shards") out[k] = without_timings(v);
+    return out;
+  }
+  if (j.is_array()) {
+    Json out = Json::array();
+    for (const auto& v : j) out.push_back(without_timings(v));
+    return out;
+  }
+  return j;
+}
+
+TEST(RegressCli, ShardsMergeToTheUnshardedRun) {
+  const std::string dir = scratch_dir("shards");
+  const std::string base = "regress --random 8 --seed 6 --modes direct ";
+  ASSERT_EQ(run_hwinterp(base + "--json " + dir + "/full.json").code, 0);
+  for (const int n : {2, 3}) {
+    std::string shards;
+    size_t cases = 0;
+    for (int k = 1; k <= n; ++k) {
+      const std::string out = dir + "/s" + std::to_string(k) + "of" + std::to_string(n) + ".json";
+      const CliResult r = run_hwinterp(base + "--shard " + std::to_string(k) + "/" +
+                                       std::to_string(n) + " --json " + out);
+      ASSERT_EQ(r.code, 0) << r.out << r.err;
+      const Json shard = read_json(out);
+      for (const auto& run : shard["runs"]) cases += run["cases"].size();
+      shards += " " + out;
+    }
+    const CliResult m = run_hwinterp("merge" + shards + " --json " + dir + "/merged.json --junit " +
+                                     dir + "/merged.xml");
+    ASSERT_EQ(m.code, 0) << m.out << m.err;
+    const Json full = read_json(dir + "/full.json"), merged = read_json(dir + "/merged.json");
+    size_t full_cases = 0;
+    for (const auto& run : full["runs"]) full_cases += run["cases"].size();
+    EXPECT_EQ(cases, full_cases) << n << " shards: every case exactly once";
+    EXPECT_EQ(without_timings(merged), without_timings(full)) << n << " shards";
+    const std::string xml = slurp(dir + "/merged.xml");
+    EXPECT_EQ(static_cast<size_t>(std::count(xml.begin(), xml.end(), '\n')) > full_cases, true);
+    EXPECT_NE(xml.find("<testcase classname=\"dda_line_n2.direct\" name=\"004_line1\""),
+              std::string::npos);
+  }
+  const CliResult twice =
+      run_hwinterp("merge " + dir + "/s1of2.json " + dir + "/s1of2.json --json " + dir + "/x.json");
+  EXPECT_EQ(twice.code, 2);
+  EXPECT_NE(twice.err.find("shard 1/2 given twice"), std::string::npos) << twice.err;
+  const CliResult missing = run_hwinterp("merge " + dir + "/s1of3.json " + dir + "/s3of3.json");
+  EXPECT_EQ(missing.code, 1);
+  EXPECT_NE(missing.out.find("missing shard 2/3"), std::string::npos) << missing.out;
+}
+
 }  // namespace

@@ -57,10 +57,10 @@ void power_of_two_edges() {
   const CoreLimits l = V::limits();
   const int top = std::min(12, l.param("ACC_W") - 2);
   for (const bool half : {false, true}) {
-    Case<A> c{"edges",
-              models::LatticePoint(static_cast<size_t>(l.axes), 0),
-              settings(l, {1, 1, 1, 1}, half),
-              {}};
+    Case<A> c;
+    c.name = "edges";
+    c.start.assign(static_cast<size_t>(l.axes), 0);
+    c.settings = settings(l, {1, 1, 1, 1}, half);
     for (int k = 0; k <= top; ++k)
       for (const int64_t m : {(int64_t{1} << k) - 1, int64_t{1} << k, (int64_t{1} << k) + 1}) {
         A::Command cmd;

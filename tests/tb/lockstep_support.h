@@ -126,10 +126,10 @@ inline void regression_both_modes(const std::string& core, size_t variants, size
   for (const auto& v : entry.variants) {
     BenchOptions o;
     o.mode = "direct";
-    runs.push_back(v.regression(60, 5, o));
+    runs.push_back(v.regression(60, 5, o, {}));
     runs.back()->run_direct();
     o.mode = "systemc";
-    runs.push_back(v.regression(60, 5, o));
+    runs.push_back(v.regression(60, 5, o, {}));
     sc.push_back(runs.back().get());
   }
   run_systemc(sc);

@@ -1,0 +1,57 @@
+#include "tb/stimulus/from_args.h"
+
+namespace hwinterp::tb {
+
+size_t select_variant(const std::string& core, const std::vector<CoreLimits>& variants,
+                      const cli::Args& args) {
+  std::string names;
+  for (const auto& v : variants)
+    names += (names.empty() ? "" : ", ") + v.variant + " (" + std::to_string(v.axes) + " axes)";
+  if (args.given("variant")) {
+    for (size_t i = 0; i < variants.size(); ++i)
+      if (variants[i].variant == args.str("variant")) return i;
+    throw cli::UsageError("--variant: " + core + " has no variant '" + args.str("variant") +
+                          "' (there are: " + names + ")");
+  }
+  if (args.given("axes")) {
+    const int64_t axes = args.integer("axes", 1, kMaxAxes);
+    for (size_t i = 0; i < variants.size(); ++i)
+      if (variants[i].axes == axes) return i;
+    throw cli::UsageError("--axes: no " + core + " variant has " + std::to_string(axes) +
+                          " axes (there are: " + names + ")");
+  }
+  return 0;
+}
+
+void declare_cosim_options(cli::Args& args) {
+  args.option("core", "NAME", "the core to simulate (see above)")
+      .option("variant", "NAME", "the variant (default: the first, or the first with --axes)")
+      .option("axes", "N", "the first variant with N axes")
+      .option("job", "FILE", "a job file (cases, commands, settings, aborts; see README)")
+      .option("random", "N", "a seeded random stream of N commands")
+      .option("seed", "S", "seed of --random (printed; a fresh one when omitted)")
+      .flag("with-aborts", "--random: abort_i pulses at random depths into the stream")
+      .flag("with-holds", "--random: feed holds (feed 0 for a while) in the stream")
+      .option("mode", "MODE", "systemc (SC_MODULE + verilator --sc) or direct (tick() + --cc)",
+              "systemc")
+      .option("feed", "full|WORD|F", "feed: full, a feed word, or a clock fraction like 0.25")
+      .option("step-len", "N", "step pulse length, clocks (default from the variant)")
+      .option("step-space", "N", "minimum low time between steps, clocks")
+      .option("dir-setup", "N", "dir setup before a step, clocks")
+      .option("dir-hold", "N", "dir hold after a step, clocks")
+      .option("abort-at", "CYCLE", "raise abort_i for one clock at this clock edge of the run")
+      .option("vcd", "FILE", "write a VCD trace (inputs, HLS and RTL outputs)")
+      .option("fst", "FILE", "write an FST trace (via vcd2fst)")
+      .option("trace-window", "N", "trace only the last N cycles (e.g. before a mismatch)")
+      .option("path-csv", "FILE",
+              "write the lattice path (start, command targets, every move) as CSV for "
+              "scripts/plot_paths.py")
+      .option("dump-frames", "FILE",
+              "write the input frames, one hex line a clock, and FILE.sv, a Verilog "
+              "testbench that replays them into the RTL")
+      .option("inject", "KIND@CYCLE",
+              "test hook: mismatch@C flips the HLS step_o[0] before the comparison, "
+              "glitch@C the observed step_o[0] after it");
+}
+
+}  // namespace hwinterp::tb
