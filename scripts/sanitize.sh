@@ -5,6 +5,13 @@
 # our code, or are the clang fuzz build). Any sanitizer report fails the test
 # it happens in. Extra arguments go to ctest.
 # Usage: scripts/sanitize.sh [ctest args]   (HWINTERP_ASAN_BUILD_DIR changes the folder)
+#
+# One UBSan check is off (-fno-sanitize=shift-base, CMakePresets.json): SystemC
+# 2.3.4's sc_int sign-extends with (v << n) >> n on negative values
+# (sysc/datatypes/int/sc_int_base.h:574), undefined in C++17, defined in C++20
+# and what gcc does; with it on, every signed HLS datapath reports it (the
+# first run here: 79 tests, all at that one line, nothing else). gcc has no
+# per-file ignore list, and the SystemC headers are not ours to change.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${HWINTERP_ASAN_BUILD_DIR:-$root/build-asan}
