@@ -18,6 +18,7 @@
 #include "models/fixed_ratio_model.h"
 #include "models/paper_data_001_003_004.h"
 #include "run_hwinterp.h"
+#include "tb/report/json.h"
 
 namespace hwinterp::tb::testing {
 namespace {
@@ -291,6 +292,41 @@ TEST(FixedRatioWide, NearDiagonalLongLines) {
 // `hwinterp regress` runs them: the paper lines and the two random streams.
 TEST(FixedRatio, RegistryRunsEveryVariantInBothModes) {
   regression_both_modes("fixed_ratio", 3, 10);
+}
+
+// The command line on the narrow variant: a random stream's input frames
+// (hwinterp cosim --dump-frames) replayed into the RTL under Icarus Verilog
+// give the same clocks, done pulses, steps and positions: Icarus reads the
+// RTL as it is.
+TEST(FixedRatio, DumpedFramesReplayInIcarus) {
+  using hwinterp::testing::run_hwinterp;
+  using hwinterp::testing::slurp;
+  const std::string dir = hwinterp::testing::scratch_dir("fixed_ratio_frames");
+  const auto r = run_hwinterp(
+      "cosim --core fixed_ratio --variant fixed_ratio_edge --random 40 --seed 4 --mode direct "
+      "--dump-frames " +
+      dir + "/f.hex --json " + dir + "/f.json");
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  const std::string rtl = std::string(HWINTERP_SOURCE_DIR) + "/rtl/";
+  std::string files;
+  std::ifstream list(rtl + "fixed_ratio.f");
+  for (std::string name; std::getline(list, name);) files += " " + rtl + name;
+  const std::string cmd = "cd " + dir + " && iverilog -g2012 -s replay_tb -o replay f.hex.sv" +
+                          files + " && vvp -n replay +frames=f.hex > replay.log";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  const Json j = Json::parse(slurp(dir + "/f.json"));
+  const std::string log = slurp(dir + "/replay.log");
+  EXPECT_NE(log.find("cycles " + std::to_string(j["cycles"].get<int>()) + "\n"), std::string::npos)
+      << log;
+  EXPECT_NE(log.find("done_pulses " + std::to_string(j["commands"].get<int>()) + "\n"),
+            std::string::npos)
+      << log;
+  for (int i = 0; i < 3; ++i)
+    EXPECT_NE(log.find("axis " + std::to_string(i) + " steps " +
+                       std::to_string(j["steps"][i].get<int>()) + " pos " +
+                       std::to_string(j["end_position"][i].get<int>()) + "\n"),
+              std::string::npos)
+        << log;
 }
 
 std::string write_job(const std::string& name, const std::string& text) {
