@@ -45,7 +45,6 @@ class FixedRatio {
 
   using mag_t = sc_dt::sc_uint<ACC_W>;
   using diff_t = sc_dt::sc_uint<ACC_W + 1>;
-  using phase_t = sc_dt::sc_uint<FRAC_W>;
   using rate_t = sc_dt::sc_uint<FRAC_W + 1>;  // also the quotient and phase + rate
   using div_t = sc_dt::sc_uint<DIV_W>;
 
@@ -79,8 +78,9 @@ class FixedRatio {
       buf_neg_q_[i] = false;
       rem_q_[i] = 0;
       quot_q_[i] = 0;
-      phase_q_[i] = 0;
       rate_q_[i] = 0;
+      rnd_q_[i] = false;
+      sum_q_[i] = 0;
       cnt_q_[i] = 0;
       neg_q_[i] = false;
     }
@@ -96,11 +96,9 @@ class FixedRatio {
     }
     // Combinational part, from the current registers and the inputs.
     bool left[AXES], carry[AXES], must[AXES], fire[AXES], stall = false, all_fin = true;
-    rate_t sum[AXES];
     typename StepStage<AXES, POS_W, TIM_W>::Request want;
     for (int i = 0; i < AXES; ++i) {
-      sum[i] = rate_t(phase_q_[i]) + rate_q_[i];
-      carry[i] = sum[i][FRAC_W];
+      carry[i] = sum_q_[i][FRAC_W];
       left[i] = cnt_q_[i] != 0;
       must[i] = carry[i] && left[i];
       all_fin = all_fin && (!left[i] || (cnt_q_[i] == 1 && carry[i]));
@@ -121,16 +119,20 @@ class FixedRatio {
     out_.clock(in.timing, want, fire);
     feed_.clock(in.feed, act_q_, stall);
 
-    // Engine registers.
+    // Engine registers: the rate word R = rate + rnd, the phase kept as
+    // phase + R (its carry is the next tick's step).
     for (int i = 0; i < AXES; ++i) {
       if (buf_take) {
         // quot = floor(|delta_i| 2^FRAC_W / M); a nonzero remainder rounds it up.
-        rate_q_[i] = quot_q_[i] + rate_t(rem_q_[i] != 0 ? 1 : 0);
+        const bool rnd = rem_q_[i] != 0;
+        rate_q_[i] = quot_q_[i];
+        rnd_q_[i] = rnd;
         neg_q_[i] = buf_neg_q_[i];
-        phase_q_[i] = phase_t(phase_t(1) << (FRAC_W - 1));  // one half
+        // The phase starts at one half.
+        sum_q_[i] = (uint64_t{1} << (FRAC_W - 1)) + quot_q_[i] + (rnd ? 1 : 0);
         cnt_q_[i] = buf_mag_q_[i];
       } else if (advance) {
-        phase_q_[i] = sum[i].range(FRAC_W - 1, 0);
+        sum_q_[i] = rate_t(sum_q_[i].range(FRAC_W - 1, 0)) + rate_q_[i] + rate_t(rnd_q_[i] ? 1 : 0);
         if (must[i]) cnt_q_[i] = cnt_q_[i] - 1;
       }
     }
@@ -141,6 +143,20 @@ class FixedRatio {
     // Buffer: one restoring-division step per clock, or a new command.
     if (cmd_take) {
       load_buffer(in.cmd);
+    } else if (div_run && div_left_q_ == DIV_N) {
+      // The first step: M (every pair compared at once; the OR of the
+      // magnitudes >= all others, which are equal) and the integer bits
+      // |delta_i| >= M, i.e. |delta_i| = M: rem becomes 0 or 2 |delta_i|.
+      mag_t max = 0;
+      for (int i = 0; i < AXES; ++i) {
+        bool is_max = true;
+        for (int j = 0; j < AXES; ++j) is_max = is_max && buf_mag_q_[i] >= buf_mag_q_[j];
+        if (is_max) max |= buf_mag_q_[i];
+        rem_q_[i] = is_max ? mag_t(0) : mag_t(rem_q_[i] << 1);
+        quot_q_[i] = rate_t((quot_q_[i] << 1) | rate_t(is_max ? 1 : 0));
+      }
+      buf_max_q_ = max;
+      div_left_q_ = div_left_q_ - 1;
     } else if (div_run) {
       for (int i = 0; i < AXES; ++i) {
         const diff_t diff = diff_t(rem_q_[i]) - diff_t(buf_max_q_);
@@ -158,22 +174,19 @@ class FixedRatio {
   Outputs outputs() const { return out_.outputs(!buf_valid_q_, act_q_ || buf_valid_q_, done_q_); }
 
  private:
-  // Taking a command stores the magnitudes, the signs and M = max |delta_i|,
-  // and starts the dividers (remainder |delta_i|, no quotient bit yet); a
-  // zero-length command needs no division.
+  // Taking a command stores the magnitudes and the signs, and starts the
+  // dividers (remainder |delta_i|, no quotient bit yet; M comes with the
+  // first step); a zero-length command needs no division.
   void load_buffer(const Own& cmd) {
-    mag_t max = 0;
     bool zero = true;
     for (int i = 0; i < AXES; ++i) {
       buf_neg_q_[i] = cmd.delta[i][ACC_W - 1];
       // |-2^(ACC_W-1)| = 2^(ACC_W-1) still fits ACC_W unsigned bits.
       buf_mag_q_[i] = buf_neg_q_[i] ? mag_t(-cmd.delta[i]) : cmd.delta[i];
-      if (buf_mag_q_[i] > max) max = buf_mag_q_[i];
       zero = zero && cmd.delta[i] == 0;
       rem_q_[i] = buf_mag_q_[i];
       quot_q_[i] = 0;
     }
-    buf_max_q_ = max;
     div_left_q_ = zero ? 0 : DIV_N;
   }
 
@@ -181,14 +194,15 @@ class FixedRatio {
   bool buf_valid_q_;
   mag_t buf_mag_q_[AXES];
   bool buf_neg_q_[AXES];
-  mag_t buf_max_q_;
+  mag_t buf_max_q_;  // M, from the first divider step on
   div_t div_left_q_;
   mag_t rem_q_[AXES];
   rate_t quot_q_[AXES];
   // Engine.
   bool act_q_;
-  phase_t phase_q_[AXES];
-  rate_t rate_q_[AXES];
+  rate_t rate_q_[AXES];  // floor(|delta_i| 2^FRAC_W / M)
+  bool rnd_q_[AXES];     // ...rounded up: R = rate + rnd
+  rate_t sum_q_[AXES];   // phase + R
   mag_t cnt_q_[AXES];
   bool neg_q_[AXES];
   bool done_q_;

@@ -3,22 +3,27 @@
 // axis in the ratio of the axis deltas; per axis a fixed-rate pulse generator
 // then sends exactly |delta_i| pulses.
 //
-// command stream -> buffer (|delta|, M, rate divider) -> engine (feed_accum gated) -> step_stage
+// command stream -> buffer (|delta|, M and rate dividers) -> engine (feed_accum gated) -> step_stage
 //
 // Command: cmd_delta_i holds one signed (two's complement) ACC_W-bit delta in
 // steps per axis, axis i in bits [i*ACC_W +: ACC_W]; it is taken on a clock
 // where cmd_valid_i && cmd_ready_o (cmd_ready_o is a register: the buffer is
-// free). Taking a command registers |delta_i|, the signs and
-// M = max_i |delta_i|.
+// free). Taking a command registers |delta_i| and the signs.
 //
-// Per-line computation, in the buffer: the rate word of axis i is
+// Per-line computation, in the buffer: with M = max_i |delta_i| (a true
+// maximum) the rate word of axis i is
 //     R_i = ceil(|delta_i| 2^FRAC_W / M)
 // (a fixed-point fraction with FRAC_W fraction bits; the major axis gets
 // exactly 1.0 = 2^FRAC_W). One restoring divider per axis, all in parallel:
 // the remainder starts at |delta_i|; each clock gives one quotient bit
 // (bit = rem >= M; rem -= M when set; rem <<= 1). FRAC_W + 1 clocks give the
 // integer bit and the FRAC_W fraction bits; a nonzero final remainder rounds
-// the quotient up as the engine loads it. Rounding up, not to nearest: with
+// the quotient up as the engine loads it. The first of these clocks also
+// finds M: every pair of magnitudes compared at once (one carry chain deep),
+// M the OR of the magnitudes that are >= all others; the same compares give
+// the integer bits (|delta_i| >= M). Computing M at the take instead (negate,
+// then a chain of AXES compares) made that the critical path (29 MHz on
+// iCE40 HX8K with 4 axes). Rounding up, not to nearest: with
 // any rounding error e_i = R_i / 2^FRAC_W - |delta_i| / M >= 0 a step due
 // exactly on a tick stays on it, so the generator is tick for tick the
 // paper's exact-frequency generator whenever 2 M^2 <= 2^FRAC_W
@@ -41,7 +46,9 @@
 //
 // Engine: per axis a FRAC_W-bit phase accumulator, started at one half (the
 // paper's mid-period step edge, its Eqs. 9/10), adds R_i on each feed tick;
-// its carry is a step. After k ticks axis i has stepped
+// its carry is a step. It is kept as phase + R_i (FRAC_W + 1 bits), so the
+// carry that decides the tick's step comes from a register and the adder is
+// off the stall path. After k ticks axis i has stepped
 //     floor(k R_i / 2^FRAC_W + 1/2)
 // times. A per-axis down counter, loaded with |delta_i|, stops the axis after
 // exactly |delta_i| pulses, and the command completes when every counter is
@@ -117,34 +124,54 @@ module fixed_ratio #(
   localparam int DivN = FRAC_W + 1;  // quotient bits: the integer bit and FRAC_W fraction bits
   localparam int DivW = $clog2(DivN + 1);  // holds the divider clocks left, 0..DivN
   localparam logic [DivW-1:0] DivClocks = DivW'(DivN);
-  localparam logic [FRAC_W-1:0] Half = {1'b1, {(FRAC_W - 1) {1'b0}}};  // phase start: one half
+  localparam logic [FRAC_W:0] Half = {2'b01, {(FRAC_W - 1) {1'b0}}};  // phase start: one half
 
   // ---------------------------------------------------------------------------
-  // Command buffer (one entry): magnitudes, signs and M of the taken command,
-  // and the dividers that turn them into rate words while the engine runs.
+  // Command buffer (one entry): magnitudes and signs of the taken command,
+  // M, and the dividers that turn them into rate words while the engine runs.
   logic                  buf_valid_q, buf_valid_d;
-  logic [ACC_W-1:0]      buf_max_q;  // M = max |delta_i|, the divisor
+  logic [ACC_W-1:0]      buf_max_q;  // M = max |delta_i|, the divisor (from the first step on)
   logic [DivW-1:0]       div_left_q, div_left_d;  // divider clocks still to run
   logic                  cmd_take;  // a command is taken this clock
   logic                  buf_take;  // the engine loads the buffer this clock
   logic                  div_run;  // the dividers compute one quotient bit this clock
+  logic                  div_first;  // ...the first one: M and the integer bits
   logic                  buf_ready;  // the buffered command's rate words are ready
-  logic [AXES*ACC_W-1:0] cmd_mag;  // |delta_i| of the offered command
-  logic [ACC_W-1:0]      cmd_max;  // their maximum
+  logic [AXES*ACC_W-1:0] buf_mag;  // |delta_i| of the buffered command, axis i at [i*ACC_W +: ACC_W]
+  logic [AXES*AXES-1:0]  cmp_ge, cmp_eq;  // bit i*AXES + j, i < j: |delta_i| >= (=) |delta_j|
+  logic [AXES*AXES-1:0]  ge;  // bit i*AXES + j: |delta_i| >= |delta_j|
+  logic [AXES-1:0]       is_max;  // |delta_i| = M: the axis's integer quotient bit
+  logic [ACC_W-1:0]      max;  // M, the OR of the maximal magnitudes (all equal)
   logic                  cmd_zero;  // the offered command is zero-length
 
   assign cmd_ready_o = !buf_valid_q;
   assign cmd_take    = cmd_valid_i && !buf_valid_q;
   assign div_run     = buf_valid_q && (div_left_q != '0);
+  assign div_first   = div_left_q == DivClocks;
   assign buf_ready   = buf_valid_q && (div_left_q == '0);
   assign cmd_zero    = (cmd_delta_i == '0);
 
-  // A true maximum (a chain of compares): the divisor of every axis.
-  always_comb begin
-    cmd_max = '0;
-    for (int i = 0; i < AXES; i++) begin
-      if (cmd_mag[i*ACC_W +: ACC_W] > cmd_max) cmd_max = cmd_mag[i*ACC_W +: ACC_W];
+  // M, a true maximum, in the first divider clock: every pair compared at
+  // once (one carry chain deep, not a chain of compares), then the OR of the
+  // magnitudes that are >= all others. The same compares give the first
+  // quotient bit, |delta_i| >= M.
+  for (genvar i = 0; i < AXES; i++) begin : g_max
+    for (genvar j = 0; j < AXES; j++) begin : g_pair
+      if (i < j) begin : g_cmp  // one compare per pair
+        assign cmp_ge[i*AXES+j] = buf_mag[i*ACC_W +: ACC_W] >= buf_mag[j*ACC_W +: ACC_W];
+        assign cmp_eq[i*AXES+j] = buf_mag[i*ACC_W +: ACC_W] == buf_mag[j*ACC_W +: ACC_W];
+        assign ge[i*AXES+j]     = cmp_ge[i*AXES+j];
+      end else begin : g_mirror  // j <= i: from the pair's compare
+        assign cmp_ge[i*AXES+j] = 1'b0;
+        assign cmp_eq[i*AXES+j] = 1'b0;
+        assign ge[i*AXES+j]     = (i == j) || !cmp_ge[j*AXES+i] || cmp_eq[j*AXES+i];
+      end
     end
+    assign is_max[i] = &ge[i*AXES +: AXES];
+  end
+  always_comb begin
+    max = '0;
+    for (int i = 0; i < AXES; i++) max = max | (is_max[i] ? buf_mag[i*ACC_W +: ACC_W] : '0);
   end
 
   // ---------------------------------------------------------------------------
@@ -197,7 +224,7 @@ module fixed_ratio #(
     end else begin
       buf_valid_q <= buf_valid_d;
       div_left_q  <= div_left_d;
-      if (cmd_take) buf_max_q <= cmd_max;
+      if (div_run && div_first) buf_max_q <= max;
       act_q  <= act_d;
       done_q <= last;
     end
@@ -207,50 +234,56 @@ module fixed_ratio #(
   // Per-axis slices: the magnitude of the offered delta, its buffer entry and
   // divider, and the engine's phase accumulator and pulse counter.
   for (genvar i = 0; i < AXES; i++) begin : g_axis
-    logic [ACC_W-1:0]  delta;
-    logic              cmd_neg;
+    logic [ACC_W-1:0] delta;
+    logic             cmd_neg;
+    logic [ACC_W-1:0] cmd_mag;  // |delta_i| of the offered command
     // Buffer and divider
-    logic [ACC_W-1:0]  buf_mag_q;  // |delta_i|
-    logic              buf_neg_q;
-    logic [ACC_W-1:0]  rem_q, rem_d;  // partial remainder, < 2 M
-    logic [ACC_W:0]    diff;  // rem - M
-    logic              ge;  // rem >= M: the quotient bit
-    logic [ACC_W-1:0]  rem_sub;  // rem - M when ge, else rem (< M)
-    logic [FRAC_W:0]   quot_q, quot_d;  // quotient bits so far, the last in bit 0
-    logic [FRAC_W:0]   rate;  // the rounded-up rate word, R_i <= 2^FRAC_W
-    // Engine
-    logic [FRAC_W-1:0] phase_q, phase_d;
-    logic [FRAC_W:0]   rate_q;
-    logic [FRAC_W:0]   sum;  // phase + rate < 2^(FRAC_W+1)
-    logic [ACC_W-1:0]  cnt_q, cnt_d;  // pulses still to send
-    logic              neg_q;
+    logic [ACC_W-1:0] buf_mag_q;  // |delta_i|
+    logic             buf_neg_q;
+    logic [ACC_W-1:0] rem_q, rem_d;  // partial remainder, < 2 M
+    logic [ACC_W:0]   diff;  // rem - M
+    logic             bit_ge;  // rem >= M: the quotient bit
+    logic [ACC_W-1:0] rem_sub;  // rem - M when bit_ge, else rem (< M)
+    logic [FRAC_W:0]  quot_q, quot_d;  // quotient bits so far, the last in bit 0
+    logic             rnd;  // the remainder is not 0: round the quotient up
+    // Engine: the rate word R = rate_q + rnd_q <= 2^FRAC_W, and the phase
+    // accumulator kept as phase + R, so that the carry is a register.
+    logic [FRAC_W:0]  rate_q;  // floor(|delta_i| 2^FRAC_W / M)
+    logic             rnd_q;
+    logic [FRAC_W:0]  sum_q, sum_d;  // phase + R < 2^(FRAC_W+1); phase = sum_q[FRAC_W-1:0]
+    logic [FRAC_W:0]  sum_next;  // the next tick's phase + R
+    logic [FRAC_W:0]  sum_load;  // one half + R
+    logic [ACC_W-1:0] cnt_q, cnt_d;  // pulses still to send
+    logic             neg_q;
 
     assign delta   = cmd_delta_i[i*ACC_W +: ACC_W];
     assign cmd_neg = delta[ACC_W-1];
     // |-2^(ACC_W-1)| = 2^(ACC_W-1) still fits ACC_W unsigned bits.
-    assign cmd_mag[i*ACC_W +: ACC_W] = cmd_neg ? ACC_W'(-delta) : delta;
+    assign cmd_mag = cmd_neg ? ACC_W'(-delta) : delta;
+    assign buf_mag[i*ACC_W +: ACC_W] = buf_mag_q;
 
     // One restoring-division step: rem < 2 M <= 2^ACC_W before it, < M after
-    // the subtraction, so the shifted remainder still fits ACC_W bits.
+    // the subtraction, so the shifted remainder still fits ACC_W bits. The
+    // first step's bit is is_max (rem = |delta_i| <= M then, M not yet in
+    // buf_max_q): rem becomes 0 or 2 |delta_i|.
     assign diff    = {1'b0, rem_q} - {1'b0, buf_max_q};
-    assign ge      = !diff[ACC_W];
-    assign rem_sub = ge ? diff[ACC_W-1:0] : rem_q;
-    assign rem_d   = cmd_take ? cmd_mag[i*ACC_W +: ACC_W] :
-                     div_run  ? rem_sub << 1 : rem_q;
-    assign quot_d  = cmd_take ? '0 : div_run ? {quot_q[FRAC_W-1:0], ge} : quot_q;
+    assign bit_ge  = div_first ? is_max[i] : !diff[ACC_W];
+    assign rem_sub = div_first ? (is_max[i] ? '0 : rem_q) : (bit_ge ? diff[ACC_W-1:0] : rem_q);
+    assign rem_d   = cmd_take ? cmd_mag : div_run ? rem_sub << 1 : rem_q;
+    assign quot_d  = cmd_take ? '0 : div_run ? {quot_q[FRAC_W-1:0], bit_ge} : quot_q;
     // After FRAC_W + 1 steps quot_q = floor(|delta_i| 2^FRAC_W / M); a
-    // nonzero remainder rounds it up (it is then < 2^FRAC_W: no overflow).
-    assign rate    = quot_q + {{FRAC_W{1'b0}}, rem_q != '0};
+    // nonzero remainder rounds it up (quot_q < 2^FRAC_W then: no overflow).
+    assign rnd     = rem_q != '0;
 
-    // Engine: the phase starts at one half; its carry is a step.
-    assign sum      = {1'b0, phase_q} + rate_q;
-    assign carry[i] = sum[FRAC_W];
+    // Engine: a tick adds R to the phase; the carry out is a step.
+    assign carry[i] = sum_q[FRAC_W];
     assign left[i]  = cnt_q != '0;
     assign fin[i]   = !left[i] || (cnt_q == ACC_W'(1) && carry[i]);
     assign neg[i]   = neg_q;
-    assign phase_d  = buf_take ? Half : advance ? sum[FRAC_W-1:0] : phase_q;
-    assign cnt_d    = buf_take ? buf_mag_q :
-                      (advance && must[i]) ? cnt_q - ACC_W'(1) : cnt_q;
+    assign sum_next = {1'b0, sum_q[FRAC_W-1:0]} + rate_q + {{FRAC_W{1'b0}}, rnd_q};
+    assign sum_load = Half + quot_q + {{FRAC_W{1'b0}}, rnd};
+    assign sum_d    = buf_take ? sum_load : advance ? sum_next : sum_q;
+    assign cnt_d    = buf_take ? buf_mag_q : (advance && must[i]) ? cnt_q - ACC_W'(1) : cnt_q;
 
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
@@ -258,23 +291,25 @@ module fixed_ratio #(
         buf_neg_q <= 1'b0;
         rem_q     <= '0;
         quot_q    <= '0;
-        phase_q   <= '0;
         rate_q    <= '0;
+        rnd_q     <= 1'b0;
+        sum_q     <= '0;
         cnt_q     <= '0;
         neg_q     <= 1'b0;
       end else begin
         if (cmd_take) begin
-          buf_mag_q <= cmd_mag[i*ACC_W +: ACC_W];
+          buf_mag_q <= cmd_mag;
           buf_neg_q <= cmd_neg;
         end
         rem_q  <= rem_d;
         quot_q <= quot_d;
         if (buf_take) begin
-          rate_q <= rate;
+          rate_q <= quot_q;
+          rnd_q  <= rnd;
           neg_q  <= buf_neg_q;
         end
-        phase_q <= phase_d;
-        cnt_q   <= cnt_d;
+        sum_q <= sum_d;
+        cnt_q <= cnt_d;
       end
     end
   end
