@@ -18,12 +18,14 @@
 //
 // Exact counts in M ticks. Write R_i / 2^F = r_i + e_i, r_i = |delta_i| / M,
 // 0 <= e_i < 2^-F (rounding up). Then k R_i / 2^F + 1/2 = k r_i + k e_i + 1/2
-// and at k = M: floor(|delta_i| + M e_i + 1/2) = |delta_i| when
+// and at k = M: floor(|delta_i| + M e_i + 1/2) >= |delta_i| for any F (no
+// axis can lag: every counter is at 0 by tick M), and = |delta_i| when
 // M e_i < 1/2, which holds for every M <= 2^(ACC_W-1) the widths accept when
-// F >= ACC_W (M e_i < M 2^-F <= 1/2). s_i is nondecreasing, so no axis overshoots before tick M
-// and none lags after it: the min() never binds, the major axis (r = 1,
-// e = 0) steps on every tick, and the command completes in exactly
-// max(M, 1) ticks (fixed_ratio_ticks).
+// F >= ACC_W (M e_i < M 2^-F <= 1/2). s_i is nondecreasing, so no axis
+// overshoots before tick M and none lags after it: the min() never binds
+// (the pulse counters never act), the major axis (r = 1, e = 0) steps on
+// every tick, and the command completes in exactly max(M, 1) ticks
+// (fixed_ratio_ticks).
 //
 // Equal to the exact-frequency generator. With exact rates the model gives
 // s_i(k) = floor(k r_i + 1/2) = round(|delta_i| k / M): the paper's generator

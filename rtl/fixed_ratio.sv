@@ -3,7 +3,7 @@
 // axis in the ratio of the axis deltas; per axis a fixed-rate pulse generator
 // then sends exactly |delta_i| pulses.
 //
-// command stream -> buffer (|delta|, M and rate dividers) -> engine (feed_accum gated) -> step_stage
+// command stream -> buffer (|delta|, M, rate dividers) -> engine (feed_accum gated) -> step_stage
 //
 // Command: cmd_delta_i holds one signed (two's complement) ACC_W-bit delta in
 // steps per axis, axis i in bits [i*ACC_W +: ACC_W]; it is taken on a clock
@@ -52,11 +52,13 @@
 //     floor(k R_i / 2^FRAC_W + 1/2)
 // times. A per-axis down counter, loaded with |delta_i|, stops the axis after
 // exactly |delta_i| pulses, and the command completes when every counter is
-// 0. The major axis (rate 1.0) steps on every tick and every other axis has
-// sent its |delta_i| pulses by tick M when M 2^-FRAC_W <= 1/2, i.e. for every
-// M the widths accept when FRAC_W >= ACC_W: completion in exactly M ticks
-// (proof in models/fixed_ratio_model.h). A zero-length command takes one tick
-// with no step, then done_o.
+// 0. The major axis (rate 1.0) steps on every tick; with rates rounded up no
+// other axis can lag (each is due its |delta_i| pulses by tick M, whatever
+// FRAC_W), and none runs ahead of its count when M 2^-FRAC_W <= 1/2, i.e. for
+// every M the widths accept when FRAC_W >= ACC_W: the counters never clip a
+// step, and every command completes in exactly M ticks (proof in
+// models/fixed_ratio_model.h). A zero-length command takes one tick with no
+// step, then done_o.
 //
 // Path error (normal distance of every visited point from the ideal line, in
 // steps): the lag of minor axis i from the exact line lies in
@@ -137,7 +139,7 @@ module fixed_ratio #(
   logic                  div_run;  // the dividers compute one quotient bit this clock
   logic                  div_first;  // ...the first one: M and the integer bits
   logic                  buf_ready;  // the buffered command's rate words are ready
-  logic [AXES*ACC_W-1:0] buf_mag;  // |delta_i| of the buffered command, axis i at [i*ACC_W +: ACC_W]
+  logic [AXES*ACC_W-1:0] buf_mag;  // |delta_i| of the buffered command at [i*ACC_W +: ACC_W]
   logic [AXES*AXES-1:0]  cmp_ge, cmp_eq;  // bit i*AXES + j, i < j: |delta_i| >= (=) |delta_j|
   logic [AXES*AXES-1:0]  ge;  // bit i*AXES + j: |delta_i| >= |delta_j|
   logic [AXES-1:0]       is_max;  // |delta_i| = M: the axis's integer quotient bit
