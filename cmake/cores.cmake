@@ -29,4 +29,16 @@ hwinterp_core_variant(CORE ppc_arc NAME ppc_arc_c24
   PARAMS AXES=2 COORD_W=24 POS_W=32 TIM_W=16 FEED_W=16 DEFAULTS ${timing})
 hwinterp_core_variant(CORE ppc_arc NAME ppc_arc_edge
   PARAMS AXES=2 COORD_W=9 POS_W=13 TIM_W=5 FEED_W=5 DEFAULTS ${timing})
+# fixed_ratio: ACC_W is the width of each signed delta; FRAC_W the rate
+# words' fraction bits, ACC_W + 3: the rate rounding adds at most 1/16 step
+# to the lag of a minor axis, the error bound stays below 1 step up to 4
+# axes, and every line up to 2^((FRAC_W-1)/2) steps runs tick for tick as the
+# paper's exact-frequency generator (rtl/fixed_ratio.sv,
+# models/fixed_ratio_model.h).
+hwinterp_core_variant(CORE fixed_ratio NAME fixed_ratio_n2
+  PARAMS AXES=2 ACC_W=32 FRAC_W=35 POS_W=32 TIM_W=16 FEED_W=16 DEFAULTS ${timing})
+hwinterp_core_variant(CORE fixed_ratio NAME fixed_ratio_n4
+  PARAMS AXES=4 ACC_W=32 FRAC_W=35 POS_W=32 TIM_W=16 FEED_W=16 DEFAULTS ${timing})
+hwinterp_core_variant(CORE fixed_ratio NAME fixed_ratio_edge
+  PARAMS AXES=3 ACC_W=11 FRAC_W=14 POS_W=13 TIM_W=5 FEED_W=5 DEFAULTS ${timing})
 hwinterp_finish_variants()

@@ -202,7 +202,9 @@ class Scoreboard {
     last_error_ = e;
     const models::ErrorBound bound = stream_->bound();
     if (e > r.max_path_error_steps) r.max_path_error_steps = e;
-    if (bound.value > r.error_bound) {
+    // The weakest bound checked: an equal non-strict one too (a case starts
+    // at "< 0", which an exact core's bound of 0, "<= 0", must replace).
+    if (bound.value > r.error_bound || (bound.value == r.error_bound && !bound.strict)) {
       r.error_bound = bound.value;
       r.error_bound_strict = bound.strict;
     }

@@ -1,0 +1,4 @@
+stepdir_axis.sv
+step_stage.sv
+feed_accum.sv
+fixed_ratio.sv

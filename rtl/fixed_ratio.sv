@@ -1,0 +1,343 @@
+// fixed_ratio: N-axis fixed-ratio (velocity-synthesis) line generator
+// (paper 004_dc68f1177cad466f.txt): one computation per line sets a rate per
+// axis in the ratio of the axis deltas; per axis a fixed-rate pulse generator
+// then sends exactly |delta_i| pulses.
+//
+// command stream -> buffer (|delta|, M, rate dividers) -> engine (feed_accum gated) -> step_stage
+//
+// Command: cmd_delta_i holds one signed (two's complement) ACC_W-bit delta in
+// steps per axis, axis i in bits [i*ACC_W +: ACC_W]; it is taken on a clock
+// where cmd_valid_i && cmd_ready_o (cmd_ready_o is a register: the buffer is
+// free). Taking a command registers |delta_i| and the signs.
+//
+// Per-line computation, in the buffer: with M = max_i |delta_i| (a true
+// maximum) the rate word of axis i is
+//     R_i = ceil(|delta_i| 2^FRAC_W / M)
+// (a fixed-point fraction with FRAC_W fraction bits; the major axis gets
+// exactly 1.0 = 2^FRAC_W). One restoring divider per axis, all in parallel:
+// the remainder starts at |delta_i|; each clock gives one quotient bit
+// (bit = rem >= M; rem -= M when set; rem <<= 1). FRAC_W + 1 clocks give the
+// integer bit and the FRAC_W fraction bits; a nonzero final remainder rounds
+// the quotient up as the engine loads it. The first of these clocks also
+// finds M: every pair of magnitudes compared at once (one carry chain deep),
+// M the OR of the magnitudes that are >= all others; the same compares give
+// the integer bits (|delta_i| >= M). Computing M at the take instead (negate,
+// then a chain of AXES compares) made that the critical path (29 MHz on
+// iCE40 HX8K with 4 axes). Rounding up, not to nearest: with
+// any rounding error e_i = R_i / 2^FRAC_W - |delta_i| / M >= 0 a step due
+// exactly on a tick stays on it, so the generator is tick for tick the
+// paper's exact-frequency generator whenever 2 M^2 <= 2^FRAC_W
+// (models/fixed_ratio_model.h; to nearest it is not, e.g. on (6,5)).
+// Zero-length commands (M = 0) skip the division.
+//
+// Latency and gaps: a command is loaded into the engine at the earliest
+// FRAC_W + 2 clocks after the clock that took it (FRAC_W + 1 divider clocks,
+// then the load); a zero-length one 1 clock after. The division runs while
+// the previous command runs; the buffer frees on the clock that loads the
+// engine and takes the next command one clock later, so a command is loaded
+// at the earliest FRAC_W + 3 clocks after the previous one. Back-to-back
+// commands therefore run without a gap when each runs at least FRAC_W + 3
+// clocks from its load to its last tick; after a shorter one (C clocks) the
+// engine idles FRAC_W + 3 - C clocks before the next one's load. At feed 1/2
+// with 1-clock pulses and spaces (nothing stalls) a command runs
+// C = 2 max(M, 1) clocks: no gap from M >= (FRAC_W + 3) / 2 on (19 steps at
+// FRAC_W = 35), short lines back to back one per FRAC_W + 3 clocks (tested
+// in tests/tb/fixed_ratio_test.cpp).
+//
+// Engine: per axis a FRAC_W-bit phase accumulator, started at one half (the
+// paper's mid-period step edge, its Eqs. 9/10), adds R_i on each feed tick;
+// its carry is a step. It is kept as phase + R_i (FRAC_W + 1 bits), so the
+// carry that decides the tick's step comes from a register and the adder is
+// off the stall path. After k ticks axis i has stepped
+//     floor(k R_i / 2^FRAC_W + 1/2)
+// times. A per-axis down counter, loaded with |delta_i|, stops the axis after
+// exactly |delta_i| pulses, and the command completes when every counter is
+// 0. The major axis (rate 1.0) steps on every tick; with rates rounded up no
+// other axis can lag (each is due its |delta_i| pulses by tick M, whatever
+// FRAC_W), and none runs ahead of its count when M 2^-FRAC_W <= 1/2, i.e. for
+// every M the widths accept when FRAC_W >= ACC_W: the counters never clip a
+// step, and every command completes in exactly M ticks (proof in
+// models/fixed_ratio_model.h). A zero-length command takes one tick with no
+// step, then done_o.
+//
+// Path error (normal distance of every visited point from the ideal line, in
+// steps): the lag of minor axis i from the exact line lies in
+// (-1/2, 1/2 + M e_i] with M e_i < M 2^-FRAC_W <= 2^(ACC_W-1-FRAC_W); the
+// major axis has none. 2 axes: error <= (M / L) (1/2 + M e) <=
+// (|dx| + |dy|) / (2 L) + M^2 2^-FRAC_W / L. N axes:
+// error <= sqrt(N - 1) (1/2 + 2^(ACC_W-1-FRAC_W)); FRAC_W = ACC_W + 3 makes
+// the rounding term <= 1/16 and the bound < 1 for N <= 4 (0.974 for 4 axes).
+// models::fixed_ratio_hw_bound() gives the per-command bound the testbench
+// checks on every move.
+//
+// Feed (rtl/feed_accum.sv): each clock a FEED_W-bit phase accumulator adds
+// feed_i; its carry lets the engine do one tick. feed_i >= 2^FEED_W is full
+// feed (every clock), feed_i = 0 holds the move. The engine stalls, and the
+// feed phase holds, whenever an axis that must step is not ready (step/dir
+// timing, rtl/step_stage.sv): steps are delayed, never dropped.
+//
+// Abort: abort_i high at a clock edge ends the running command and drops the
+// buffered one (a command transferred on that same edge too, and a division
+// in progress); no tick runs on that edge, so no new step starts from it on.
+// A pulse already high keeps its full length: busy_o falls at most
+// max(step_len_i, 1) - 1 clocks after the abort edge, and pos_o then equals
+// the pulses on the wire, a point the command's path visits. No done_o for an
+// aborted command. The core takes commands again from the next clock on.
+//
+// Status: busy_o while a command is buffered (or being divided) or running
+// or a pulse is high; done_o pulses for one clock, with the last tick's
+// steps, per completed command; pos_o holds the signed position of each axis,
+// axis i in bits [i*POS_W +: POS_W] (wraps at POS_W bits; the testbench
+// refuses commands that would wrap it). dir_o = 1: negative motion.
+//
+// Per-axis vectors are flat with `+:` slices, not packed 2-D arrays: Yosys
+// 0.23 (Debian 12) cannot parse multi-dimensional packed arrays, and
+// Icarus 11 cannot bit-select into them with a loop index. Constant part
+// selects are continuous assignments (Icarus 11 does not support them inside
+// always_* processes).
+module fixed_ratio #(
+  parameter int AXES   = 2,   // axes (1..32)
+  parameter int ACC_W  = 32,  // width of each signed delta of cmd_delta_i
+  parameter int FRAC_W = 35,  // rate-word fraction bits: >= ACC_W (exact counts in M ticks)
+  parameter int POS_W  = 32,  // position counter width (wraps)
+  parameter int TIM_W  = 16,  // width of the step/dir timing settings and counters
+  parameter int FEED_W = 16   // feed phase width; feed_i = 2^FEED_W is full feed
+) (
+  input  logic                  clk_i,         // clock
+  input  logic                  rst_ni,        // asynchronous, active low
+  // Command stream
+  input  logic                  cmd_valid_i,   // a command is offered on cmd_delta_i
+  output logic                  cmd_ready_o,   // the buffer is free: an offered command is taken
+  input  logic [AXES*ACC_W-1:0] cmd_delta_i,   // signed delta of axis i at [i*ACC_W +: ACC_W]
+  // Run-time settings
+  input  logic [FEED_W:0]       feed_i,        // ticks per clock = feed_i / 2^FEED_W
+  input  logic [TIM_W-1:0]      step_len_i,    // step pulse length, clocks (0 acts as 1)
+  input  logic [TIM_W-1:0]      step_space_i,  // min low time between pulses, clocks
+  input  logic [TIM_W-1:0]      dir_setup_i,   // dir stable before a step rises, clocks
+  input  logic [TIM_W-1:0]      dir_hold_i,    // dir stable after a step falls, clocks
+  input  logic                  abort_i,       // end the move, drop the buffer (one clock)
+  // Step/dir and status
+  output logic [AXES-1:0]       step_o,        // step pulses, axis i in bit i
+  output logic [AXES-1:0]       dir_o,         // 1: negative motion
+  output logic [AXES*POS_W-1:0] pos_o,         // signed positions, axis i at [i*POS_W +: POS_W]
+  output logic                  busy_o,        // a command buffered or running, or a pulse high
+  output logic                  done_o         // one clock per completed command
+);
+  localparam int DivN = FRAC_W + 1;  // quotient bits: the integer bit and FRAC_W fraction bits
+  localparam int DivW = $clog2(DivN + 1);  // holds the divider clocks left, 0..DivN
+  localparam logic [DivW-1:0] DivClocks = DivW'(DivN);
+  localparam logic [FRAC_W:0] Half = {2'b01, {(FRAC_W - 1) {1'b0}}};  // phase start: one half
+
+  // ---------------------------------------------------------------------------
+  // Command buffer (one entry): magnitudes and signs of the taken command,
+  // M, and the dividers that turn them into rate words while the engine runs.
+  logic                  buf_valid_q, buf_valid_d;
+  logic [ACC_W-1:0]      buf_max_q;  // M = max |delta_i|, the divisor (from the first step on)
+  logic [DivW-1:0]       div_left_q, div_left_d;  // divider clocks still to run
+  logic                  cmd_take;  // a command is taken this clock
+  logic                  buf_take;  // the engine loads the buffer this clock
+  logic                  div_run;  // the dividers compute one quotient bit this clock
+  logic                  div_first;  // ...the first one: M and the integer bits
+  logic                  buf_ready;  // the buffered command's rate words are ready
+  logic [AXES*ACC_W-1:0] buf_mag;  // |delta_i| of the buffered command at [i*ACC_W +: ACC_W]
+  logic [AXES*AXES-1:0]  cmp_ge, cmp_eq;  // bit i*AXES + j, i < j: |delta_i| >= (=) |delta_j|
+  logic [AXES*AXES-1:0]  ge;  // bit i*AXES + j: |delta_i| >= |delta_j|
+  logic [AXES-1:0]       is_max;  // |delta_i| = M: the axis's integer quotient bit
+  logic [ACC_W-1:0]      max;  // M, the OR of the maximal magnitudes (all equal)
+  logic                  cmd_zero;  // the offered command is zero-length
+
+  assign cmd_ready_o = !buf_valid_q;
+  assign cmd_take    = cmd_valid_i && !buf_valid_q;
+  assign div_run     = buf_valid_q && (div_left_q != '0);
+  assign div_first   = div_left_q == DivClocks;
+  assign buf_ready   = buf_valid_q && (div_left_q == '0);
+  assign cmd_zero    = (cmd_delta_i == '0);
+
+  // M, a true maximum, in the first divider clock: every pair compared at
+  // once (one carry chain deep, not a chain of compares), then the OR of the
+  // magnitudes that are >= all others. The same compares give the first
+  // quotient bit, |delta_i| >= M.
+  for (genvar i = 0; i < AXES; i++) begin : g_max
+    for (genvar j = 0; j < AXES; j++) begin : g_pair
+      if (i < j) begin : g_cmp  // one compare per pair
+        assign cmp_ge[i*AXES+j] = buf_mag[i*ACC_W +: ACC_W] >= buf_mag[j*ACC_W +: ACC_W];
+        assign cmp_eq[i*AXES+j] = buf_mag[i*ACC_W +: ACC_W] == buf_mag[j*ACC_W +: ACC_W];
+        assign ge[i*AXES+j]     = cmp_ge[i*AXES+j];
+      end else begin : g_mirror  // j <= i: from the pair's compare
+        assign cmp_ge[i*AXES+j] = 1'b0;
+        assign cmp_eq[i*AXES+j] = 1'b0;
+        assign ge[i*AXES+j]     = (i == j) || !cmp_ge[j*AXES+i] || cmp_eq[j*AXES+i];
+      end
+    end
+    assign is_max[i] = &ge[i*AXES +: AXES];
+  end
+  always_comb begin
+    max = '0;
+    for (int i = 0; i < AXES; i++) max = max | (is_max[i] ? buf_mag[i*ACC_W +: ACC_W] : '0);
+  end
+
+  // ---------------------------------------------------------------------------
+  // Engine: completion, feed and the per-axis slices below.
+  logic            act_q, act_d;  // a command is running
+  logic            done_q;
+  logic [AXES-1:0] left;  // the axis still has pulses to send
+  logic [AXES-1:0] carry;  // its phase carries on this tick
+  logic [AXES-1:0] must;  // it steps on this tick
+  logic [AXES-1:0] fin;  // it has no pulse left after this tick
+  logic [AXES-1:0] neg;  // direction of the running command (1: negative)
+  logic [AXES-1:0] ready;  // the axis may start a pulse on the next clock
+  logic            tick, stall, advance, last;
+
+  assign must     = carry & left;
+  assign stall    = |(must & ~ready);
+  assign advance  = tick && !stall && !abort_i;
+  assign last     = advance && (&fin);
+  assign buf_take = buf_ready && (!act_q || last) && !abort_i;
+
+  feed_accum #(
+    .FEED_W(FEED_W)
+  ) u_feed (
+    .clk_i,
+    .rst_ni,
+    .feed_i,
+    .run_i (act_q),
+    .hold_i(stall),
+    .tick_o(tick)
+  );
+
+  always_comb begin
+    act_d = act_q;
+    if (last) act_d = 1'b0;
+    if (buf_take) act_d = 1'b1;
+    if (abort_i) act_d = 1'b0;
+    buf_valid_d = !abort_i && (cmd_take || (buf_valid_q && !buf_take));
+    div_left_d  = div_left_q;
+    if (div_run) div_left_d = div_left_q - DivW'(1);
+    if (cmd_take) div_left_d = cmd_zero ? '0 : DivClocks;
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      buf_valid_q <= 1'b0;
+      buf_max_q   <= '0;
+      div_left_q  <= '0;
+      act_q       <= 1'b0;
+      done_q      <= 1'b0;
+    end else begin
+      buf_valid_q <= buf_valid_d;
+      div_left_q  <= div_left_d;
+      if (div_run && div_first) buf_max_q <= max;
+      act_q  <= act_d;
+      done_q <= last;
+    end
+  end
+
+  // ---------------------------------------------------------------------------
+  // Per-axis slices: the magnitude of the offered delta, its buffer entry and
+  // divider, and the engine's phase accumulator and pulse counter.
+  for (genvar i = 0; i < AXES; i++) begin : g_axis
+    logic [ACC_W-1:0] delta;
+    logic             cmd_neg;
+    logic [ACC_W-1:0] cmd_mag;  // |delta_i| of the offered command
+    // Buffer and divider
+    logic [ACC_W-1:0] buf_mag_q;  // |delta_i|
+    logic             buf_neg_q;
+    logic [ACC_W-1:0] rem_q, rem_d;  // partial remainder, < 2 M
+    logic [ACC_W:0]   diff;  // rem - M
+    logic             bit_ge;  // rem >= M: the quotient bit
+    logic [ACC_W-1:0] rem_sub;  // rem - M when bit_ge, else rem (< M)
+    logic [FRAC_W:0]  quot_q, quot_d;  // quotient bits so far, the last in bit 0
+    logic             rnd;  // the remainder is not 0: round the quotient up
+    // Engine: the rate word R = rate_q + rnd_q <= 2^FRAC_W, and the phase
+    // accumulator kept as phase + R, so that the carry is a register.
+    logic [FRAC_W:0]  rate_q;  // floor(|delta_i| 2^FRAC_W / M)
+    logic             rnd_q;
+    logic [FRAC_W:0]  sum_q, sum_d;  // phase + R < 2^(FRAC_W+1); phase = sum_q[FRAC_W-1:0]
+    logic [FRAC_W:0]  sum_next;  // the next tick's phase + R
+    logic [FRAC_W:0]  sum_load;  // one half + R
+    logic [ACC_W-1:0] cnt_q, cnt_d;  // pulses still to send
+    logic             neg_q;
+
+    assign delta   = cmd_delta_i[i*ACC_W +: ACC_W];
+    assign cmd_neg = delta[ACC_W-1];
+    // |-2^(ACC_W-1)| = 2^(ACC_W-1) still fits ACC_W unsigned bits.
+    assign cmd_mag = cmd_neg ? ACC_W'(-delta) : delta;
+    assign buf_mag[i*ACC_W +: ACC_W] = buf_mag_q;
+
+    // One restoring-division step: rem < 2 M <= 2^ACC_W before it, < M after
+    // the subtraction, so the shifted remainder still fits ACC_W bits. The
+    // first step's bit is is_max (rem = |delta_i| <= M then, M not yet in
+    // buf_max_q): rem becomes 0 or 2 |delta_i|.
+    assign diff    = {1'b0, rem_q} - {1'b0, buf_max_q};
+    assign bit_ge  = div_first ? is_max[i] : !diff[ACC_W];
+    assign rem_sub = div_first ? (is_max[i] ? '0 : rem_q) : (bit_ge ? diff[ACC_W-1:0] : rem_q);
+    assign rem_d   = cmd_take ? cmd_mag : div_run ? rem_sub << 1 : rem_q;
+    assign quot_d  = cmd_take ? '0 : div_run ? {quot_q[FRAC_W-1:0], bit_ge} : quot_q;
+    // After FRAC_W + 1 steps quot_q = floor(|delta_i| 2^FRAC_W / M); a
+    // nonzero remainder rounds it up (quot_q < 2^FRAC_W then: no overflow).
+    assign rnd     = rem_q != '0;
+
+    // Engine: a tick adds R to the phase; the carry out is a step.
+    assign carry[i] = sum_q[FRAC_W];
+    assign left[i]  = cnt_q != '0;
+    assign fin[i]   = !left[i] || (cnt_q == ACC_W'(1) && carry[i]);
+    assign neg[i]   = neg_q;
+    assign sum_next = {1'b0, sum_q[FRAC_W-1:0]} + rate_q + {{FRAC_W{1'b0}}, rnd_q};
+    assign sum_load = Half + quot_q + {{FRAC_W{1'b0}}, rnd};
+    assign sum_d    = buf_take ? sum_load : advance ? sum_next : sum_q;
+    assign cnt_d    = buf_take ? buf_mag_q : (advance && must[i]) ? cnt_q - ACC_W'(1) : cnt_q;
+
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        buf_mag_q <= '0;
+        buf_neg_q <= 1'b0;
+        rem_q     <= '0;
+        quot_q    <= '0;
+        rate_q    <= '0;
+        rnd_q     <= 1'b0;
+        sum_q     <= '0;
+        cnt_q     <= '0;
+        neg_q     <= 1'b0;
+      end else begin
+        if (cmd_take) begin
+          buf_mag_q <= cmd_mag;
+          buf_neg_q <= cmd_neg;
+        end
+        rem_q  <= rem_d;
+        quot_q <= quot_d;
+        if (buf_take) begin
+          rate_q <= quot_q;
+          rnd_q  <= rnd;
+          neg_q  <= buf_neg_q;
+        end
+        sum_q <= sum_d;
+        cnt_q <= cnt_d;
+      end
+    end
+  end
+
+  // ---------------------------------------------------------------------------
+  // Output stage: step/dir timing and position counters.
+  step_stage #(
+    .AXES (AXES),
+    .POS_W(POS_W),
+    .TIM_W(TIM_W)
+  ) u_out (
+    .clk_i,
+    .rst_ni,
+    .step_len_i,
+    .step_space_i,
+    .dir_setup_i,
+    .dir_hold_i,
+    .want_valid_i({AXES{act_q}} & left),
+    .want_dir_i  (neg),
+    .fire_i      ({AXES{advance}} & must),
+    .ready_o     (ready),
+    .step_o,
+    .dir_o,
+    .pos_o
+  );
+
+  assign busy_o = act_q || buf_valid_q || (|step_o);
+  assign done_o = done_q;
+endmodule
