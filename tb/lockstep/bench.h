@@ -152,6 +152,7 @@ class Bench {
         if (path_csv_) path_row("move", scoreboard_->position(), scoreboard_->last_error());
         if (options_.record_path) r.visited.push_back(scoreboard_->position());
       }
+      if (options_.record_path && seen.done) r.done_cycles.push_back(cycle_ - case_start_cycle_);
       if (frame_.abort) abort_edge(moved, r);
       follow_abort(seen, r);
     }

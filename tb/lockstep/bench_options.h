@@ -32,7 +32,8 @@ struct BenchOptions {
   // (case start), `target` (end point of a command taken), `move` (position
   // after the core stepped); scripts/plot_paths.py draws it. Empty: none.
   std::string path_csv;
-  // Keep every visited lattice point in CaseResult::visited.
+  // Keep every visited lattice point in CaseResult::visited and the cycle of
+  // every done_o pulse in CaseResult::done_cycles.
   bool record_path = false;
   // Raise abort_i (with cmd_valid_i low) on this clock edge of the run.
   std::optional<uint64_t> abort_at;

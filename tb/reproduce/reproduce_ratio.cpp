@@ -1,8 +1,12 @@
 // hwinterp reproduce --paper ratio: paper 004's eight test lines through every
 // fine line interpolator (fixed ratio, PPC, DDA plain/half, minimum deviation,
 // Bresenham), the error bounds over all short lines, PPC's 60 operations, and
-// the fixed-ratio generator built from integer clock dividers.
+// the fixed-ratio generator built from integer clock dividers, and the eight
+// lines on the hardware cores (fixed_ratio, dda_line, ppc_line) beside the
+// exact-frequency and integer-divider models.
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <cstdlib>
 #include <functional>
 #include <string>
@@ -12,6 +16,8 @@
 #include "models/min_deviation.h"
 #include "models/paper_data_001_003_004.h"
 #include "models/ppc.h"
+#include "fixed_ratio_n2_cfg.h"
+#include "models/fixed_ratio_model.h"
 #include "tb/reproduce/figure_rows.h"
 #include "tb/reproduce/hardware.h"
 #include "tb/reproduce/reproduce.h"
@@ -81,6 +87,37 @@ Check check(const Method& m, const LatticePoint& a, const LatticePoint& b) {
 std::string line_name(const std::array<int64_t, 4>& l) {
   return "(" + std::to_string(l[0]) + "," + std::to_string(l[1]) + ")->(" + std::to_string(l[2]) +
          "," + std::to_string(l[3]) + ")";
+}
+
+// One of the paper's lines on a core's hardware (HLS core and RTL in lockstep
+// against the core's model): the line's delta twice, back to back, at feed
+// 1/2 with 1-clock pulse, space, setup and hold, so that no tick ever waits
+// for the step stage and one engine tick takes exactly 2 clocks. The second
+// command runs in steady state (its predecessor's setup overlapped), so the
+// clocks between the two done_o pulses are 2 ticks per engine tick: the
+// completion in ticks, read at the pins.
+struct CoreLine {
+  double error = 0;  // over both copies (the same path, translated)
+  double ticks = 0;
+  bool ok = false;  // lockstep clean, exact counts and end, within the core's bound
+};
+
+CoreLine core_line(const std::string& core, const std::string& setup,
+                   const std::array<int64_t, 4>& l) {
+  const std::string move = "move " + std::to_string(l[2] - l[0]) + " " +
+                           std::to_string(l[3] - l[1]) + "\n";
+  const HardwareRun hw = run_hardware(
+      core, "start " + std::to_string(l[0]) + " " + std::to_string(l[1]) +
+                "\nfeed 0.5\nstep_len 1\nstep_space 1\ndir_setup 1\ndir_hold 1\n" + setup + move +
+                move);
+  const tb::CaseResult& r = hw.result;
+  CoreLine c;
+  c.error = r.max_path_error_steps;
+  c.ok = r.passed() && r.done_cycles.size() == 2 &&
+         r.steps[0] == 2 * uint64_t(mag(l[2] - l[0])) &&
+         r.steps[1] == 2 * uint64_t(mag(l[3] - l[1]));
+  if (r.done_cycles.size() == 2) c.ticks = double(r.done_cycles[1] - r.done_cycles[0]) / 2;
+  return c;
 }
 
 PaperReproduction reproduce_ratio() {
@@ -209,6 +246,73 @@ PaperReproduction reproduce_ratio() {
   rows.add("integer dividers at 1 MHz: 8 lines within the divider bound", "yes",
            div_ok ? "yes" : "no", div_ok);
 
+  // The same eight lines on the hardware cores, beside the exact-frequency
+  // and integer-divider models: error (steps) / completion (ticks).
+  // Each core is checked against its own model: fixed_ratio against its
+  // bit-exact model at the variant's FRAC_W (a tick's steps merged into one
+  // move, so its points are a subset of the exact-frequency generator's:
+  // fewer, never farther), dda_line and ppc_line against the 004 models.
+  struct CoreColumn {
+    std::string core, setup, title, model_name;
+    std::function<StepPath(const LatticePoint&, const LatticePoint&)> model;
+  };
+  const auto fixed_ratio_hw = [](const LatticePoint& a, const LatticePoint& b) {
+    const std::vector<int64_t> d{b[0] - a[0], b[1] - a[1]};
+    StepPath p;
+    p.start = a;
+    p.end = b;
+    p.ticks = double(models::fixed_ratio_ticks(d));
+    for (const auto& m : models::fixed_ratio_hw_moves(a, d, fixed_ratio_n2_cfg::FRAC_W))
+      p.moves.push_back({double(m.tick), {m.step[0], m.step[1]}, m.point});
+    return p;
+  };
+  const std::vector<CoreColumn> cores = {
+      {"fixed_ratio", "", "fixed_ratio", "its model (max(|dx|,|dy|))", fixed_ratio_hw},
+      {"dda_line", "preload zero\n", "dda_line", all[2].name + " (2^n)", all[2].run},
+      {"dda_line", "preload half\n", "dda_line half", all[3].name + " (2^n)", all[3].run},
+      {"ppc_line", "", "ppc_line", all[1].name + " (|dx|+|dy|)", all[1].run},
+  };
+  TextTable hw({"line", "paper", "exact f", "dividers 1 MHz", "fixed_ratio", "dda_line",
+                "dda_line half", "ppc_line"});
+  Json hw_json = Json::array();
+  std::vector<double> core_worst(cores.size(), 0);
+  std::vector<bool> core_ok(cores.size(), true);
+  for (size_t li = 0; li < pd::kRatioLines.size(); ++li) {
+    const auto& l = pd::kRatioLines[li];
+    const LatticePoint a{l[0], l[1]}, b{l[2], l[3]};
+    const auto cell = [](double e, double t) { return fmt("%.4f", e) + " / " + fmt("%.1f", t); };
+    const StepPath exact = models::fixed_ratio_line(a, b);
+    const auto plan = models::fixed_ratio_divider_plan(a, b, v, clk);
+    const StepPath divided = models::fixed_ratio_divider_line(a, b, v, clk);
+    const double div_ticks = double(plan.completion_clocks) / plan.tick_clocks;
+    std::vector<std::string> row = {
+        "L" + std::to_string(li + 1), "< 1 / " + fmt("%.0f", exact.ticks),
+        cell(exact.line_error().max_error, exact.ticks),
+        cell(divided.line_error().max_error, div_ticks)};
+    Json o = Json::object();
+    o["line"] = int(li + 1);
+    o["exact_frequency"] = {{"max_error", exact.line_error().max_error}, {"ticks", exact.ticks}};
+    o["dividers_1mhz"] = {{"max_error", divided.line_error().max_error}, {"ticks", div_ticks}};
+    for (size_t ci = 0; ci < cores.size(); ++ci) {
+      const CoreColumn& col = cores[ci];
+      const CoreLine c = core_line(col.core, col.setup, l);
+      const StepPath model = col.model(a, b);
+      const bool same = c.ok && std::abs(c.error - model.line_error().max_error) < 1e-9 &&
+                        c.ticks == model.ticks;
+      core_ok[ci] = core_ok[ci] && same;
+      core_worst[ci] = std::max(core_worst[ci], c.error);
+      row.push_back(cell(c.error, c.ticks) + (same ? "" : " NO"));
+      o[col.title] = {{"max_error", c.error}, {"ticks", c.ticks}, {"equals_model", same}};
+    }
+    hw.add_row(row);
+    hw_json.push_back(std::move(o));
+  }
+  for (size_t ci = 0; ci < cores.size(); ++ci)
+    rows.add("hardware " + cores[ci].title + " on the 8 lines: clean lockstep, error and ticks " +
+                 "of " + cores[ci].model_name,
+             "equal", core_ok[ci] ? "equal, worst " + fmt("%.4f", core_worst[ci]) : "differ",
+             core_ok[ci]);
+
   out.ok = rows.ok();
   out.text =
       rows.text() +
@@ -216,11 +320,16 @@ PaperReproduction reproduce_ratio() {
       lines.render() +
       "\nFixed ratio with integer clock dividers at 1 MHz, v = 5000 (half period "
       "H = round(f_clk / (2 v |d|)); bound [(|dx|+|dy|)/2 + t1 |dy/(2Hx) - dx/(2Hy)|] / L):\n" +
-      div.render();
+      div.render() +
+      "\nThe eight lines on the hardware cores (HLS core and RTL in lockstep, feed 1/2, "
+      "1-clock timing; ticks from the clocks between two done_o pulses), beside the models: "
+      "max error (steps) / completion (ticks):\n" +
+      hw.render();
   out.json["rows"] = rows.json();
   out.json["lines"] = std::move(line_json);
   out.json["worst_up_to_40"] = std::move(bounds);
   out.json["divider_1mhz"] = std::move(div_json);
+  out.json["hardware"] = std::move(hw_json);
   return out;
 }
 
