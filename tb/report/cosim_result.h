@@ -67,7 +67,7 @@ struct CaseResult {
   std::vector<std::string> scoreboard_errors;  // the first few
   std::vector<AbortRecord> aborts;
   std::vector<models::LatticePoint> visited;  // start and every move (BenchOptions::record_path)
-  std::vector<uint64_t> done_cycles;          // case cycle of each done_o (BenchOptions::record_path)
+  std::vector<uint64_t> done_cycles;  // case cycle of each done_o (BenchOptions::record_path)
   bool timed_out = false;
   bool completed = false;  // ran to its end (not cut short by a mismatch elsewhere)
   double seconds = 0;      // from the case's first clock edge to its last

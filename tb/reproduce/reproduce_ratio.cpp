@@ -12,12 +12,12 @@
 #include <string>
 #include <vector>
 
+#include "fixed_ratio_n2_cfg.h"
 #include "models/fixed_ratio.h"
+#include "models/fixed_ratio_model.h"
 #include "models/min_deviation.h"
 #include "models/paper_data_001_003_004.h"
 #include "models/ppc.h"
-#include "fixed_ratio_n2_cfg.h"
-#include "models/fixed_ratio_model.h"
 #include "tb/reproduce/figure_rows.h"
 #include "tb/reproduce/hardware.h"
 #include "tb/reproduce/reproduce.h"
@@ -104,17 +104,16 @@ struct CoreLine {
 
 CoreLine core_line(const std::string& core, const std::string& setup,
                    const std::array<int64_t, 4>& l) {
-  const std::string move = "move " + std::to_string(l[2] - l[0]) + " " +
-                           std::to_string(l[3] - l[1]) + "\n";
-  const HardwareRun hw = run_hardware(
-      core, "start " + std::to_string(l[0]) + " " + std::to_string(l[1]) +
-                "\nfeed 0.5\nstep_len 1\nstep_space 1\ndir_setup 1\ndir_hold 1\n" + setup + move +
-                move);
+  const std::string move =
+      "move " + std::to_string(l[2] - l[0]) + " " + std::to_string(l[3] - l[1]) + "\n";
+  const HardwareRun hw =
+      run_hardware(core, "start " + std::to_string(l[0]) + " " + std::to_string(l[1]) +
+                             "\nfeed 0.5\nstep_len 1\nstep_space 1\ndir_setup 1\ndir_hold 1\n" +
+                             setup + move + move);
   const tb::CaseResult& r = hw.result;
   CoreLine c;
   c.error = r.max_path_error_steps;
-  c.ok = r.passed() && r.done_cycles.size() == 2 &&
-         r.steps[0] == 2 * uint64_t(mag(l[2] - l[0])) &&
+  c.ok = r.passed() && r.done_cycles.size() == 2 && r.steps[0] == 2 * uint64_t(mag(l[2] - l[0])) &&
          r.steps[1] == 2 * uint64_t(mag(l[3] - l[1]));
   if (r.done_cycles.size() == 2) c.ticks = double(r.done_cycles[1] - r.done_cycles[0]) / 2;
   return c;
@@ -285,10 +284,10 @@ PaperReproduction reproduce_ratio() {
     const auto plan = models::fixed_ratio_divider_plan(a, b, v, clk);
     const StepPath divided = models::fixed_ratio_divider_line(a, b, v, clk);
     const double div_ticks = double(plan.completion_clocks) / plan.tick_clocks;
-    std::vector<std::string> row = {
-        "L" + std::to_string(li + 1), "< 1 / " + fmt("%.0f", exact.ticks),
-        cell(exact.line_error().max_error, exact.ticks),
-        cell(divided.line_error().max_error, div_ticks)};
+    std::vector<std::string> row = {"L" + std::to_string(li + 1),
+                                    "< 1 / " + fmt("%.0f", exact.ticks),
+                                    cell(exact.line_error().max_error, exact.ticks),
+                                    cell(divided.line_error().max_error, div_ticks)};
     Json o = Json::object();
     o["line"] = int(li + 1);
     o["exact_frequency"] = {{"max_error", exact.line_error().max_error}, {"ticks", exact.ticks}};
@@ -297,8 +296,8 @@ PaperReproduction reproduce_ratio() {
       const CoreColumn& col = cores[ci];
       const CoreLine c = core_line(col.core, col.setup, l);
       const StepPath model = col.model(a, b);
-      const bool same = c.ok && std::abs(c.error - model.line_error().max_error) < 1e-9 &&
-                        c.ticks == model.ticks;
+      const bool same =
+          c.ok && std::abs(c.error - model.line_error().max_error) < 1e-9 && c.ticks == model.ticks;
       core_ok[ci] = core_ok[ci] && same;
       core_worst[ci] = std::max(core_worst[ci], c.error);
       row.push_back(cell(c.error, c.ticks) + (same ? "" : " NO"));

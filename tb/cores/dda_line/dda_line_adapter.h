@@ -16,6 +16,7 @@
 #include "hls/dda_line.h"
 #include "models/dda_line_model.h"
 #include "tb/cli/cli_args.h"
+#include "tb/cores/delta_payload.h"
 #include "tb/lockstep/pins.h"
 #include "tb/lockstep/rtl_pins.h"
 #include "tb/scoreboard/move.h"
@@ -31,51 +32,38 @@ struct Adapter {
   template <class Cfg>
   using Hls = hls::DdaLine<Cfg>;
 
-  struct Command {
-    std::array<int64_t, kMaxAxes> delta{};  // signed steps per axis
-  };
+  using Command = DeltaCommand;  // cmd_delta_i (tb/cores/delta_payload.h)
   struct Setup {
     bool half_preload = false;
   };
 
   // --- pins -----------------------------------------------------------------
   static std::vector<PortSpec> own_ports(const CoreLimits& l) {
-    return {{"cmd_delta_i", l.axes, l.param("ACC_W")}, {"half_preload_i", 1, 1}};
+    return {delta_port(l), {"half_preload_i", 1, 1}};
   }
   static size_t own_values(const Command& c, const Setup& s, const CoreLimits& l, uint64_t* out) {
-    for (int i = 0; i < l.axes; ++i)
-      out[i] = static_cast<uint64_t>(c.delta[static_cast<size_t>(i)]);
-    out[l.axes] = s.half_preload;
-    return static_cast<size_t>(l.axes) + 1;
+    const size_t n = delta_values(c, l, out);
+    out[n] = s.half_preload;
+    return n + 1;
   }
   // Direct mode: the Verilated --cc model's and the HLS core's own inputs.
   template <class Cfg, class Rtl, class Own>
   static void drive(const Command& c, const Setup& s, Rtl& rtl, Own& own) {
-    for (int i = 0; i < Cfg::AXES; ++i) {
-      const uint64_t d = static_cast<uint64_t>(c.delta[static_cast<size_t>(i)]);
-      put_bits(rtl.cmd_delta_i, i * Cfg::ACC_W, Cfg::ACC_W, d);
-      own.delta[i] = d;
-    }
+    drive_deltas<Cfg>(c, rtl, own);
     rtl.half_preload_i = s.half_preload;
     own.half_preload = s.half_preload;
   }
   // SystemC mode: the own input signals, bound to both DUTs.
   template <class Cfg>
-  struct ScPins {
-    sc_core::sc_signal<hls::pin_t<Cfg::AXES * Cfg::ACC_W>> delta{"cmd_delta"};
+  struct ScPins : DeltaScPin<Cfg> {
     sc_core::sc_signal<bool> half{"half_preload"};
-    hls::pin_t<Cfg::AXES* Cfg::ACC_W> value = 0;  // kept: building a wide pin value allocates
     template <class Dut>
     void bind(Dut& d) {
-      d.cmd_delta_i(delta);
+      DeltaScPin<Cfg>::bind(d);
       d.half_preload_i(half);
     }
     void write(const Command& c, const Setup& s) {
-      for (int i = 0; i < Cfg::AXES; ++i)
-        hls::set_pin_field<Cfg::AXES * Cfg::ACC_W>(
-            value, i * Cfg::ACC_W, Cfg::ACC_W,
-            static_cast<uint64_t>(c.delta[static_cast<size_t>(i)]));
-      delta.write(value);
+      DeltaScPin<Cfg>::write(c);
       half.write(s.half_preload);
     }
   };

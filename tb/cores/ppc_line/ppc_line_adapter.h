@@ -16,62 +16,22 @@
 #include "hls/ppc_line.h"
 #include "models/ppc.h"
 #include "tb/cli/cli_args.h"
-#include "tb/lockstep/pins.h"
-#include "tb/lockstep/rtl_pins.h"
+#include "tb/cores/delta_payload.h"
 #include "tb/scoreboard/move.h"
 #include "tb/stimulus/case.h"
-#include "tb/stimulus/delta_commands.h"
 #include "tb/stimulus/rng.h"
 
 namespace hwinterp::tb::cores::ppc_line {
 
-struct Adapter {
+struct Adapter : DeltaPayload<Adapter> {
   static constexpr const char* kName = "ppc_line";
   static constexpr const char* kSummary =
       "2-axis point-by-point comparison line interpolator (003/004 papers' PPC)";
   template <class Cfg>
   using Hls = hls::PpcLine<Cfg>;
 
-  struct Command {
-    std::array<int64_t, kMaxAxes> delta{};  // signed steps: dx, dy
-  };
-  struct Setup {};
-
-  // --- pins -----------------------------------------------------------------
-  static std::vector<PortSpec> own_ports(const CoreLimits& l) {
-    return {{"cmd_delta_i", l.axes, l.param("ACC_W")}};
-  }
-  static size_t own_values(const Command& c, const Setup&, const CoreLimits& l, uint64_t* out) {
-    for (int i = 0; i < l.axes; ++i)
-      out[i] = static_cast<uint64_t>(c.delta[static_cast<size_t>(i)]);
-    return static_cast<size_t>(l.axes);
-  }
-  // Direct mode: the Verilated --cc model's and the HLS core's own inputs.
-  template <class Cfg, class Rtl, class Own>
-  static void drive(const Command& c, const Setup&, Rtl& rtl, Own& own) {
-    for (int i = 0; i < Cfg::AXES; ++i) {
-      const uint64_t d = static_cast<uint64_t>(c.delta[static_cast<size_t>(i)]);
-      put_bits(rtl.cmd_delta_i, i * Cfg::ACC_W, Cfg::ACC_W, d);
-      own.delta[i] = d;
-    }
-  }
-  // SystemC mode: the own input signals, bound to both DUTs.
-  template <class Cfg>
-  struct ScPins {
-    sc_core::sc_signal<hls::pin_t<Cfg::AXES * Cfg::ACC_W>> delta{"cmd_delta"};
-    hls::pin_t<Cfg::AXES* Cfg::ACC_W> value = 0;  // kept: building a wide pin value allocates
-    template <class Dut>
-    void bind(Dut& d) {
-      d.cmd_delta_i(delta);
-    }
-    void write(const Command& c, const Setup&) {
-      for (int i = 0; i < Cfg::AXES; ++i)
-        hls::set_pin_field<Cfg::AXES * Cfg::ACC_W>(
-            value, i * Cfg::ACC_W, Cfg::ACC_W,
-            static_cast<uint64_t>(c.delta[static_cast<size_t>(i)]));
-      delta.write(value);
-    }
-  };
+  // Command (cmd_delta_i), pins, apply, validation, the `line`/`move` job
+  // directives: DeltaPayload (tb/cores/delta_payload.h).
 
   // --- reference model (models/ppc.h) -----------------------------------------
   class Reference {
@@ -91,26 +51,14 @@ struct Adapter {
     models::LatticePoint start_, end_;
     models::ErrorBound bound_;
   };
-  static void apply(const Command& c, models::LatticePoint& at) {
-    for (size_t i = 0; i < at.size(); ++i) at[i] += c.delta[i];
-  }
   // |dx| + |dy| operations; a zero-length command takes one.
   static uint64_t work(const Command& c);
 
   // --- stimulus ---------------------------------------------------------------
-  // Deltas fit ACC_W (validate_case() checks the end point against POS_W;
-  // a line stays in its box).
-  static void validate(const Command& c, const models::LatticePoint&, const CoreLimits& l,
-                       const std::string& where) {
-    validate_deltas<Adapter>(c, l, where);
-  }
-  static Setup random_setup(Rng&) { return {}; }
   // Every octant, axis-parallel and vertical lines, zero-length commands,
   // reversals, and long lines up to the widths.
   static Command random_command(Rng& rng, const CoreLimits& l, const models::LatticePoint& at,
                                 const Command& previous);
-  // `line X Y` (to an absolute point), `move DX DY` (tb/stimulus/delta_commands.h).
-  static bool job_directive(JobLine<Adapter>& line) { return delta_job_directive(line); }
   // The eight test lines of 004_dc68f1177cad466f.txt (004_line1..8) and the
   // line (0,0)->(4,3) of 003_b291717b57510359.txt (003_line).
   static std::vector<Case<Adapter>> paper_lines(const CoreLimits& l,
@@ -123,7 +71,6 @@ struct Adapter {
   // --- command line (hwinterp cosim --core ppc_line) -------------------------
   static void declare_options(cli::Args& args);
   static std::vector<std::string> sources() { return {"line", "paper-lines"}; }
-  static void setup_from_options(const cli::Args&, Setup&) {}
   static std::vector<Case<Adapter>> cases_from_options(const cli::Args& args, const CoreLimits& l,
                                                        const RunSettings<Adapter>& settings);
 };
