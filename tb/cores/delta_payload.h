@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "hls/pin_types.h"
+#include "models/lattice_path.h"
 #include "tb/cli/cli_args.h"
 #include "tb/lockstep/pins.h"
 #include "tb/lockstep/rtl_pins.h"
@@ -64,6 +65,28 @@ struct DeltaScPin {
           static_cast<uint64_t>(c.delta[static_cast<size_t>(i)]));
     delta.write(value);
   }
+};
+
+// The ideal path of a delta command, the line from its start to start +
+// delta: the deviation metric and the plot polyline of every line core's
+// reference model (its Reference derives from it and adds the move stream
+// and the bound).
+class IdealLine {
+ public:
+  IdealLine(const models::LatticePoint& start, const DeltaCommand& c) : start_(start), end_(start) {
+    for (size_t i = 0; i < end_.size(); ++i) end_[i] += c.delta[i];
+  }
+  // Normal distance of a visited point from the line, in steps.
+  double error(const models::LatticePoint& p) const {
+    return models::point_line_distance(p, start_, end_);
+  }
+  // The ideal path as a polyline (for plots): the line itself.
+  std::vector<std::vector<double>> ideal() const {
+    return {{start_.begin(), start_.end()}, {end_.begin(), end_.end()}};
+  }
+
+ protected:
+  models::LatticePoint start_, end_;
 };
 
 // The payload of a core whose only own input is cmd_delta_i; A is the

@@ -36,23 +36,16 @@ int64_t random_magnitude(Rng& rng) {
 
 Adapter::Reference::Reference(const models::LatticePoint& start, const Command& c, const Setup& s,
                               const CoreLimits& l)
-    : stream_(start, delta_vector(c, start.size()),
+    : IdealLine(start, c),
+      stream_(start, delta_vector(c, start.size()),
               s.half_preload ? models::Preload::kHalf : models::Preload::kZero),
-      start_(start),
-      end_(start),
-      bound_(models::dda_error_bound(l.axes, stream_.preload())) {
-  apply(c, end_);
-}
+      bound_(models::dda_error_bound(l.axes, stream_.preload())) {}
 
 bool Adapter::Reference::next(Move& m) {
   if (!stream_.next(move_)) return false;
   m.index = move_.iteration;
   for (size_t i = 0; i < move_.step.size(); ++i) m.step[i] = static_cast<int8_t>(move_.step[i]);
   return true;
-}
-
-double Adapter::Reference::error(const models::LatticePoint& p) const {
-  return models::point_line_distance(p, start_, end_);
 }
 
 uint64_t Adapter::work(const Command& c) {

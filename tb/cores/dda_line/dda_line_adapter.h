@@ -69,22 +69,16 @@ struct Adapter {
   };
 
   // --- reference model (models/dda_line_model.h) ------------------------------
-  class Reference {
+  class Reference : public IdealLine {
    public:
     Reference(const models::LatticePoint& start, const Command& c, const Setup& s,
               const CoreLimits& l);
     bool next(Move& m);
-    double error(const models::LatticePoint& p) const;
     models::ErrorBound bound() const { return bound_; }
-    // The ideal path as a polyline (for plots): the line itself.
-    std::vector<std::vector<double>> ideal() const {
-      return {{start_.begin(), start_.end()}, {end_.begin(), end_.end()}};
-    }
 
    private:
     models::DdaMoveStream stream_;
     models::DdaMove move_;
-    models::LatticePoint start_, end_;
     models::ErrorBound bound_;
   };
   static void apply(const Command& c, models::LatticePoint& at) {

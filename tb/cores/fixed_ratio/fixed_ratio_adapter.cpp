@@ -34,22 +34,15 @@ int64_t random_magnitude(Rng& rng) {
 
 Adapter::Reference::Reference(const models::LatticePoint& start, const Command& c, const Setup&,
                               const CoreLimits& l)
-    : stream_(start, delta_vector(c, start.size()), l.param("FRAC_W")),
-      start_(start),
-      end_(start),
-      bound_(models::fixed_ratio_hw_bound(stream_.delta(), l.param("FRAC_W"))) {
-  apply(c, end_);
-}
+    : IdealLine(start, c),
+      stream_(start, delta_vector(c, start.size()), l.param("FRAC_W")),
+      bound_(models::fixed_ratio_hw_bound(stream_.delta(), l.param("FRAC_W"))) {}
 
 bool Adapter::Reference::next(Move& m) {
   if (!stream_.next(move_)) return false;
   m.index = move_.tick;
   for (size_t i = 0; i < move_.step.size(); ++i) m.step[i] = static_cast<int8_t>(move_.step[i]);
   return true;
-}
-
-double Adapter::Reference::error(const models::LatticePoint& p) const {
-  return models::point_line_distance(p, start_, end_);
 }
 
 uint64_t Adapter::work(const Command& c) {

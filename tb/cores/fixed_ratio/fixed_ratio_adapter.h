@@ -37,22 +37,16 @@ struct Adapter : DeltaPayload<Adapter> {
   // directives: DeltaPayload (tb/cores/delta_payload.h).
 
   // --- reference model (models/fixed_ratio_model.h) ---------------------------
-  class Reference {
+  class Reference : public IdealLine {
    public:
     Reference(const models::LatticePoint& start, const Command& c, const Setup& s,
               const CoreLimits& l);
     bool next(Move& m);
-    double error(const models::LatticePoint& p) const;
     models::ErrorBound bound() const { return bound_; }
-    // The ideal path as a polyline (for plots): the line itself.
-    std::vector<std::vector<double>> ideal() const {
-      return {{start_.begin(), start_.end()}, {end_.begin(), end_.end()}};
-    }
 
    private:
     models::FixedRatioMoveStream stream_;
     models::FixedRatioMove move_;
-    models::LatticePoint start_, end_;
     models::ErrorBound bound_;
   };
   // Engine ticks: max(M, 1). (The FRAC_W + 1 divider clocks overlap the

@@ -13,12 +13,6 @@ using cli::UsageError;
 
 namespace {
 
-models::LatticePoint end_of(const models::LatticePoint& start, const Adapter::Command& c) {
-  models::LatticePoint e = start;
-  Adapter::apply(c, e);
-  return e;
-}
-
 int64_t random_magnitude(Rng& rng, int64_t cap) {
   switch (rng.below(10)) {
     case 0:
@@ -44,9 +38,8 @@ int64_t random_magnitude(Rng& rng, int64_t cap) {
 
 Adapter::Reference::Reference(const models::LatticePoint& start, const Command& c, const Setup&,
                               const CoreLimits&)
-    : stream_(start, end_of(start, c)),
-      start_(start),
-      end_(end_of(start, c)),
+    : IdealLine(start, c),
+      stream_(start, end_),
       bound_{models::ppc_line_error_bound(start_, end_), false} {}
 
 bool Adapter::Reference::next(Move& m) {
@@ -55,10 +48,6 @@ bool Adapter::Reference::next(Move& m) {
   m.index = static_cast<uint64_t>(sm.time);
   for (size_t i = 0; i < 2; ++i) m.step[i] = static_cast<int8_t>(sm.step[i]);
   return true;
-}
-
-double Adapter::Reference::error(const models::LatticePoint& p) const {
-  return models::point_line_distance(p, start_, end_);
 }
 
 uint64_t Adapter::work(const Command& c) {

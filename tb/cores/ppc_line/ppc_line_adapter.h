@@ -34,21 +34,15 @@ struct Adapter : DeltaPayload<Adapter> {
   // directives: DeltaPayload (tb/cores/delta_payload.h).
 
   // --- reference model (models/ppc.h) -----------------------------------------
-  class Reference {
+  class Reference : public IdealLine {
    public:
     Reference(const models::LatticePoint& start, const Command& c, const Setup& s,
               const CoreLimits& l);
     bool next(Move& m);
-    double error(const models::LatticePoint& p) const;
     models::ErrorBound bound() const { return bound_; }
-    // The ideal path as a polyline (for plots): the line itself.
-    std::vector<std::vector<double>> ideal() const {
-      return {{start_.begin(), start_.end()}, {end_.begin(), end_.end()}};
-    }
 
    private:
     models::PpcLineStream stream_;
-    models::LatticePoint start_, end_;
     models::ErrorBound bound_;
   };
   // |dx| + |dy| operations; a zero-length command takes one.
