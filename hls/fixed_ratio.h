@@ -56,14 +56,7 @@ class FixedRatio {
   using Outputs = StepperOutputs<AXES, POS_W>;
 
   // The own ports of the SC_MODULE face (hls/stepper_module.h).
-  struct OwnPorts {
-    sc_core::sc_in<pin_t<AXES * ACC_W>> cmd_delta_i{"cmd_delta_i"};
-    void read(Own& own) const {
-      const pin_t<AXES* ACC_W>& delta = cmd_delta_i.read();
-      for (int i = 0; i < AXES; ++i)
-        own.delta[i] = pin_field<AXES * ACC_W>(delta, i * ACC_W, ACC_W);
-    }
-  };
+  using OwnPorts = DeltaPort<AXES, ACC_W>;
 
   FixedRatio() { reset(); }
 

@@ -72,7 +72,7 @@ class StepdirAxis {
 
   bool step_q_ = false;
   bool dir_q_ = false;
-  tim_t high_q_ = 0;        // cycles step has been high, this one included
+  tim_t high_q_ = 0;     // cycles step has been high, this one included
   tim_t low_q_ = 1;      // cycles step has been low (saturating)
   tim_t dir_age_q_ = 1;  // cycles dir has held its value (saturating)
 };

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -20,12 +21,37 @@
 #include "tb/lockstep/pins.h"
 #include "tb/lockstep/rtl_pins.h"
 #include "tb/stimulus/delta_commands.h"
+#include "tb/stimulus/rng.h"
 
 namespace hwinterp::tb::cores {
 
 struct DeltaCommand {
   std::array<int64_t, kMaxAxes> delta{};  // signed steps per axis
 };
+
+// The first `axes` deltas, as the models take them.
+inline std::vector<int64_t> delta_vector(const DeltaCommand& c, size_t axes) {
+  return {c.delta.begin(), c.delta.begin() + static_cast<std::ptrdiff_t>(axes)};
+}
+
+// One random delta magnitude of the line cores' random streams: mostly short
+// (0-3, 0-40, 0-300 steps), now and then up to 3000.
+inline int64_t random_delta_magnitude(Rng& rng) {
+  switch (rng.below(8)) {
+    case 0:
+    case 1:
+      return rng.range(0, 3);
+    case 2:
+    case 3:
+    case 4:
+      return rng.range(0, 40);
+    case 5:
+    case 6:
+      return rng.range(0, 300);
+    default:
+      return rng.chance(1, 4) ? rng.range(300, 3000) : rng.range(0, 100);
+  }
+}
 
 // cmd_delta_i as the harness describes it (frames, replay benches, harnesses).
 inline PortSpec delta_port(const CoreLimits& l) {

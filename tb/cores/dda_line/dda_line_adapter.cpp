@@ -9,31 +9,6 @@ namespace hwinterp::tb::cores::dda_line {
 
 using cli::UsageError;
 
-namespace {
-
-std::vector<int64_t> delta_vector(const Adapter::Command& c, size_t axes) {
-  return {c.delta.begin(), c.delta.begin() + static_cast<std::ptrdiff_t>(axes)};
-}
-
-int64_t random_magnitude(Rng& rng) {
-  switch (rng.below(8)) {
-    case 0:
-    case 1:
-      return rng.range(0, 3);
-    case 2:
-    case 3:
-    case 4:
-      return rng.range(0, 40);
-    case 5:
-    case 6:
-      return rng.range(0, 300);
-    default:
-      return rng.chance(1, 4) ? rng.range(300, 3000) : rng.range(0, 100);
-  }
-}
-
-}  // namespace
-
 Adapter::Reference::Reference(const models::LatticePoint& start, const Command& c, const Setup& s,
                               const CoreLimits& l)
     : IdealLine(start, c),
@@ -65,12 +40,12 @@ Adapter::Command Adapter::random_command(Rng& rng, const CoreLimits& l,
   if (kind == 0) {
     // all zero: one iteration, no steps
   } else if (kind <= 3) {  // single-axis move
-    c.delta[rng.below(axes)] = random_magnitude(rng) * (rng.chance(1, 2) ? 1 : -1);
+    c.delta[rng.below(axes)] = random_delta_magnitude(rng) * (rng.chance(1, 2) ? 1 : -1);
   } else if (kind <= 6) {  // reversal of the previous command
     for (size_t i = 0; i < axes; ++i) c.delta[i] = -previous.delta[i];
   } else {  // any octant
     for (size_t i = 0; i < axes; ++i)
-      c.delta[i] = random_magnitude(rng) * (rng.chance(1, 2) ? 1 : -1);
+      c.delta[i] = random_delta_magnitude(rng) * (rng.chance(1, 2) ? 1 : -1);
   }
   for (size_t i = 0; i < axes; ++i) {
     c.delta[i] = std::clamp<int64_t>(c.delta[i], -delta_cap, delta_cap);

@@ -7,31 +7,6 @@
 
 namespace hwinterp::tb::cores::fixed_ratio {
 
-namespace {
-
-std::vector<int64_t> delta_vector(const Adapter::Command& c, size_t axes) {
-  return {c.delta.begin(), c.delta.begin() + static_cast<std::ptrdiff_t>(axes)};
-}
-
-int64_t random_magnitude(Rng& rng) {
-  switch (rng.below(8)) {
-    case 0:
-    case 1:
-      return rng.range(0, 3);
-    case 2:
-    case 3:
-    case 4:
-      return rng.range(0, 40);
-    case 5:
-    case 6:
-      return rng.range(0, 300);
-    default:
-      return rng.chance(1, 4) ? rng.range(300, 3000) : rng.range(0, 100);
-  }
-}
-
-}  // namespace
-
 Adapter::Reference::Reference(const models::LatticePoint& start, const Command& c, const Setup&,
                               const CoreLimits& l)
     : IdealLine(start, c),
@@ -76,7 +51,7 @@ Adapter::Command Adapter::random_command(Rng& rng, const CoreLimits& l,
   if (kind < 15) {
     // zero length: one tick, no step
   } else if (kind < 51) {  // axis-parallel
-    c.delta[rng.below(axes)] = random_magnitude(rng) * sign();
+    c.delta[rng.below(axes)] = random_delta_magnitude(rng) * sign();
   } else if (kind < 90 && (narrow || models::fixed_ratio_ticks(delta_vector(previous, axes)) <
                                          100000)) {  // reversal of the previous command
     for (size_t i = 0; i < axes; ++i) c.delta[i] = -previous.delta[i];
@@ -92,7 +67,7 @@ Adapter::Command Adapter::random_command(Rng& rng, const CoreLimits& l,
   } else if (!narrow && kind >= 92 && kind < 102) {  // long, up to 10^4 steps
     for (size_t i = 0; i < axes; ++i) c.delta[i] = rng.range(0, 10000) * sign();
   } else {  // any octant
-    for (size_t i = 0; i < axes; ++i) c.delta[i] = random_magnitude(rng) * sign();
+    for (size_t i = 0; i < axes; ++i) c.delta[i] = random_delta_magnitude(rng) * sign();
   }
   for (size_t i = 0; i < axes; ++i) {
     // Turn back rather than leave the position window (-(-2^(ACC_W-1)) does
