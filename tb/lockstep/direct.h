@@ -63,9 +63,11 @@ void drive_inputs(const Frame<A>& f, Rtl& rtl, Inputs& in) {
   A::template drive<Cfg>(f.cmd, f.setup, rtl, in.cmd);
 }
 
-// Runs `bench` to its end in the direct mode.
-template <class A, class Cfg>
-void run_direct(Bench<A>& bench) {
+// Runs `bench` to its end in the direct mode. B is Bench<A>, or anything
+// with its next_frame()/observe()/finished() protocol (the lockstep-speed
+// benchmark records the frames through a wrapper).
+template <class A, class Cfg, class B = Bench<A>>
+void run_direct(B& bench) {
   using Core = typename A::template Hls<Cfg>;
   using Rtl = typename RtlOf<Cfg>::Cc;
   // A model makes its context the thread's current one; hand the thread back
