@@ -53,6 +53,11 @@ inline int64_t random_delta_magnitude(Rng& rng) {
   }
 }
 
+// The position after a delta command from `at`.
+inline void apply_deltas(const DeltaCommand& c, models::LatticePoint& at) {
+  for (size_t i = 0; i < at.size(); ++i) at[i] += c.delta[i];
+}
+
 // cmd_delta_i as the harness describes it (frames, replay benches, harnesses).
 inline PortSpec delta_port(const CoreLimits& l) {
   return {"cmd_delta_i", l.axes, l.param("ACC_W")};
@@ -100,7 +105,7 @@ struct DeltaScPin {
 class IdealLine {
  public:
   IdealLine(const models::LatticePoint& start, const DeltaCommand& c) : start_(start), end_(start) {
-    for (size_t i = 0; i < end_.size(); ++i) end_[i] += c.delta[i];
+    apply_deltas(c, end_);
   }
   // Normal distance of a visited point from the line, in steps.
   double error(const models::LatticePoint& p) const {
@@ -135,9 +140,7 @@ struct DeltaPayload {
     void write(const Command& c, const Setup&) { DeltaScPin<Cfg>::write(c); }
   };
 
-  static void apply(const Command& c, models::LatticePoint& at) {
-    for (size_t i = 0; i < at.size(); ++i) at[i] += c.delta[i];
-  }
+  static void apply(const Command& c, models::LatticePoint& at) { apply_deltas(c, at); }
   // Deltas fit ACC_W (validate_case() checks the end point against POS_W; a
   // line stays in its box).
   static void validate(const Command& c, const models::LatticePoint&, const CoreLimits& l,

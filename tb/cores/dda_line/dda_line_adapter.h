@@ -81,9 +81,7 @@ struct Adapter {
     models::DdaMove move_;
     models::ErrorBound bound_;
   };
-  static void apply(const Command& c, models::LatticePoint& at) {
-    for (size_t i = 0; i < at.size(); ++i) at[i] += c.delta[i];
-  }
+  static void apply(const Command& c, models::LatticePoint& at) { apply_deltas(c, at); }
   static uint64_t work(const Command& c);  // 2^n iterations
 
   // --- stimulus ---------------------------------------------------------------
