@@ -41,4 +41,13 @@ hwinterp_core_variant(CORE fixed_ratio NAME fixed_ratio_n4
   PARAMS AXES=4 ACC_W=32 FRAC_W=35 POS_W=32 TIM_W=16 FEED_W=16 DEFAULTS ${timing})
 hwinterp_core_variant(CORE fixed_ratio NAME fixed_ratio_edge
   PARAMS AXES=3 ACC_W=11 FRAC_W=14 POS_W=13 TIM_W=5 FEED_W=5 DEFAULTS ${timing})
+# log_stepper: X, Y, Z and A (AXES = 4). INT_W/FRAC_W: the coarse engine's
+# unsigned fixed-point words; MUL_K: multiplier bits per clock (a multiply
+# takes ceil((INT_W + FRAC_W) / MUL_K) clocks); SEG_W: the signed segment
+# deltas of the fine stage (dda_line's ACC_W). models/log_stepper_model.h
+# states the arithmetic and the accepted curves.
+hwinterp_core_variant(CORE log_stepper NAME log_stepper_n4
+  PARAMS AXES=4 INT_W=12 FRAC_W=32 MUL_K=11 SEG_W=16 POS_W=32 TIM_W=16 FEED_W=16 DEFAULTS ${timing})
+hwinterp_core_variant(CORE log_stepper NAME log_stepper_edge
+  PARAMS AXES=4 INT_W=11 FRAC_W=27 MUL_K=38 SEG_W=13 POS_W=27 TIM_W=5 FEED_W=7 DEFAULTS ${timing})
 hwinterp_finish_variants()

@@ -111,6 +111,16 @@ Json aggregate_json(const std::vector<Json>& cases) {
   j["scoreboard_errors"] = sb;
   j["first_mismatch"] = first_mismatch;
   j["abort"] = first_abort;
+  // The cores' own checks: counts add up, maxima over the cases.
+  for (const auto& c : cases) {
+    if (!c.contains("core_checks")) continue;
+    for (const auto& k : c["core_checks"]) {
+      const std::string count = k["count_name"].get<std::string>();
+      const std::string max = "max_" + k["name"].get<std::string>();
+      j[count] = (j.contains(count) ? j[count].get<uint64_t>() : 0) + k["count"].get<uint64_t>();
+      j[max] = std::max(j.contains(max) ? j[max].get<double>() : 0.0, k["max"].get<double>());
+    }
+  }
   j["cases"] = cases;
   return j;
 }

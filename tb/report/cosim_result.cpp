@@ -14,6 +14,19 @@ Json to_json(const AbortRecord& a) {
           {"on_reference_path", a.on_reference_path}};
 }
 
+Json CoreCheck::to_json() const {
+  return {{"name", name}, {"count_name", count_name}, {"count", count}, {"max", max},
+          {"limit", limit >= 0 ? Json(limit) : Json()}};
+}
+
+CoreCheck& CaseResult::core_check(const std::string& check, const std::string& count_name,
+                                  double limit) {
+  for (auto& c : core_checks)
+    if (c.name == check) return c;
+  core_checks.push_back({check, count_name, limit});
+  return core_checks.back();
+}
+
 Json CaseResult::to_json() const {
   Json j;
   j["core"] = core;
@@ -49,6 +62,13 @@ Json CaseResult::to_json() const {
   Json ab = Json::array();
   for (const auto& a : aborts) ab.push_back(tb::to_json(a));
   j["aborts"] = std::move(ab);
+  Json checks = Json::array();
+  for (const auto& c : core_checks) {
+    j[c.count_name] = c.count;
+    j["max_" + c.name] = c.max;
+    checks.push_back(c.to_json());
+  }
+  j["core_checks"] = std::move(checks);
   j["timed_out"] = timed_out;
   j["completed"] = completed;
   j["seconds"] = seconds;

@@ -45,6 +45,20 @@ struct AbortRecord {
 
 Json to_json(const AbortRecord& a);
 
+// A figure a core's reference model checks beyond the path error, at points
+// the model chooses (e.g. log_stepper's coarse points against the
+// double-precision model): how many were checked, the largest value seen and
+// its limit. JSON: `<count_name>` and `max_<name>` in the case object, and the
+// whole record in `core_checks`.
+struct CoreCheck {
+  std::string name;        // e.g. "point_error_steps"
+  std::string count_name;  // e.g. "points"
+  double limit = -1;       // checked as value <= limit; < 0: reported only
+  uint64_t count = 0;
+  double max = 0;
+  Json to_json() const;
+};
+
 struct CaseResult {
   std::string core, variant, name, mode;
   uint64_t ordinal = 0;  // the case's position in its run's full list (Case::ordinal)
@@ -66,6 +80,8 @@ struct CaseResult {
   uint64_t scoreboard_error_count = 0;
   std::vector<std::string> scoreboard_errors;  // the first few
   std::vector<AbortRecord> aborts;
+  std::vector<CoreCheck> core_checks;         // the core's own figures (Reference::check)
+  std::vector<models::LatticePoint> checkpoints;  // where they were checked (BenchOptions::record_path)
   std::vector<models::LatticePoint> visited;  // start and every move (BenchOptions::record_path)
   std::vector<uint64_t> done_cycles;  // case cycle of each done_o (BenchOptions::record_path)
   bool timed_out = false;
@@ -77,6 +93,8 @@ struct CaseResult {
            scoreboard_error_count == 0 && !timed_out;
   }
   Json to_json() const;
+  // The check `name`, added (with its count name and limit) on first use.
+  CoreCheck& core_check(const std::string& name, const std::string& count_name, double limit);
 };
 
 // Keeps the first few of a list of findings and counts all of them.

@@ -14,12 +14,21 @@
 //   double error(const LatticePoint&)     deviation of a visited point from the ideal path
 //   models::ErrorBound bound()            the bound the error is checked against
 //   std::vector<std::vector<double>> ideal()   the ideal path as a polyline (plots)
-// (a copyable value: the scoreboard probes copies).
+// (a copyable value: the scoreboard probes copies). Optionally, a model
+// checks figures of its own at points it chooses (tb/report/cosim_result.h,
+// CoreCheck), e.g. log_stepper's coarse points against the double model:
+//   void check(const LatticePoint& at, CaseResult&, std::vector<std::string>& failures)
+//       after each move of its command the scoreboard has matched (`at` is
+//       where the step/dir outputs have taken the axes);
+//   void finish(const LatticePoint& at, CaseResult&, std::vector<std::string>& failures)
+//       on its command's done_o (every move seen).
 #pragma once
 
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "models/dda_line_model.h"
@@ -29,6 +38,13 @@
 #include "tb/stimulus/settings.h"
 
 namespace hwinterp::tb {
+
+template <class R, class = void>
+struct HasCoreChecks : std::false_type {};
+template <class R>
+struct HasCoreChecks<R, std::void_t<decltype(std::declval<R&>().check(
+                            std::declval<const models::LatticePoint&>(), std::declval<CaseResult&>(),
+                            std::declval<std::vector<std::string>&>()))>> : std::true_type {};
 
 template <class A>
 class Scoreboard {
@@ -81,6 +97,10 @@ class Scoreboard {
           diverged_ = true;
         } else {
           check_path_error(cycle, r);
+          if constexpr (HasCoreChecks<Reference>::value) {
+            stream_->check(at_, r, failures_);
+            report_failures(cycle, r);
+          }
         }
       }
     }
@@ -97,6 +117,12 @@ class Scoreboard {
             diverged_ = true;
             break;
           }
+        if constexpr (HasCoreChecks<Reference>::value) {
+          if (!diverged_ && stream_ && current_ == done_count_) {
+            stream_->finish(at_, r, failures_);
+            report_failures(cycle, r);
+          }
+        }
         if (!diverged_) {
           current_ = static_cast<size_t>(done_count_) + 1;
           stream_.reset();
@@ -162,6 +188,11 @@ class Scoreboard {
     record_capped(r.scoreboard_errors, r.scoreboard_error_count, what);
   }
 
+  void report_failures(uint64_t cycle, CaseResult& r) {
+    for (const auto& f : failures_) error(r, "cycle " + std::to_string(cycle) + ": " + f);
+    failures_.clear();
+  }
+
   std::string move_text(const Move& m) const {
     std::string s = "(";
     for (int i = 0; i < axes_; ++i)
@@ -225,6 +256,7 @@ class Scoreboard {
   uint64_t done_count_ = 0;
   uint32_t prev_step_ = 0;
   double last_error_ = 0;
+  std::vector<std::string> failures_;  // of the reference's own checks, reported at once
   bool diverged_ = false;      // after a wrong move the rest of the sequence is not compared
   bool pos_reported_ = false;  // one pos_o report per case, not one per cycle
 };

@@ -1,0 +1,404 @@
+// log_stepper, HLS face: the cycle behaviour of rtl/log_stepper.sv as a
+// synthesizable C++ class (registers as members, tick() computes one rising
+// clock edge). rtl/log_stepper.sv documents the behaviour (command, coarse
+// engine, segment register, fine stage, abort, status);
+// models/log_stepper_model.h states the arithmetic, bit for bit.
+// Synthesizable subset: SystemC integers, fixed-size arrays, loops bounded by
+// template parameters, no floats, no heap.
+// hwinterp::hls::StepperModule<LogStepper<Cfg>> is its SC_MODULE.
+//
+// `Cfg` is a generated variant struct (cmake/cores.cmake): AXES (4), INT_W,
+// FRAC_W, MUL_K, SEG_W, POS_W, TIM_W, FEED_W.
+#pragma once
+
+#include <systemc>
+
+#include "hls/dda_line.h"
+#include "hls/pin_types.h"
+#include "hls/stepper_io.h"
+
+namespace hwinterp::hls {
+
+// The coarse engine's program: one micro-operation per entry, run in order
+// (the RTL's `case (pc_q)` holds the same table). Registers 0 and 1 are the
+// constants 1.0 and 3.0; 2..9 hold the command.
+namespace log_uop {
+enum Op : unsigned char {
+  kMul,    // dst = mul(s1, s2): MUL_CYC clocks, MUL_K bits of s2 a clock
+  kSqrt,   // dst = sqrt(s1): SQRT_CYC clocks, one root bit a clock
+  kRecip,  // dst = recip(s1): FRAC_W + 1 clocks, one quotient bit a clock
+  kAdd,    // dst = s1 + s2: one clock
+  kRsb,    // dst = 3.0 - (s1 << sh): one clock
+  kPos,    // lattice position of axis dst = pos(s1, s2): MUL_CYC clocks
+  kEmit,   // waits for the segment register, fills it (sh = 1: the even point)
+};
+enum Reg : unsigned char {
+  kOne, kThree, kB, kAb, kDl, kXEnd, kK0, kK1, kK2, kK3,
+  kAb2, kBdl, kX, kA, kQ, kU, kDx, kDa, kS2, kDp, kE, kD, kN15, kN14, kR14, kR15, kT0, kT1,
+  kRegs
+};
+struct Uop {
+  Op op;
+  unsigned char dst, s1, s2, sh;
+};
+// pc 0-1 run once per command; each odd+even cycle runs pc 2-42.
+inline constexpr int kCycleStart = 2;
+inline constexpr Uop kProgram[] = {
+    {kMul, kAb2, kAb, kAb, 0},    // 0  ab^2
+    {kMul, kBdl, kB, kDl, 0},     // 1  b dl
+    {kMul, kT0, kB, kX, 0},       // 2  b X0
+    {kAdd, kQ, kT0, kOne, 0},     // 3  q = 1 + b X0
+    {kMul, kT0, kQ, kQ, 0},       // 4  q^2
+    {kAdd, kT0, kT0, kAb2, 0},    // 5  q^2 + ab^2
+    {kSqrt, kT0, kT0, 0, 0},      // 6  root
+    {kRecip, kU, kT0, 0, 0},      // 7  u = 1 / root
+    {kMul, kT0, kQ, kU, 0},       // 8  q u
+    {kMul, kDx, kDl, kT0, 0},     // 9  dX10
+    {kMul, kT1, kAb, kU, 0},      // 10 ab u
+    {kMul, kDa, kDl, kT1, 0},     // 11 dA10
+    {kMul, kS2, kT1, kT1, 0},     // 12 s2 = sin^2 theta
+    {kMul, kDp, kBdl, kU, 0},     // 13 d' = dA10 / a
+    {kMul, kE, kDp, kS2, 0},      // 14 e = d' s2
+    {kRsb, kT0, kDp, 0, 2},       // 15 3 - 4d'
+    {kMul, kT1, kE, kT0, 0},      // 16 e (3 - 4d')
+    {kRsb, kD, kT1, 0, 1},        // 17 D
+    {kMul, kT0, kDp, kT0, 0},     // 18 d' (3 - 4d')
+    {kRsb, kN15, kT0, 0, 1},      // 19 N15
+    {kRsb, kT0, kDp, 0, 3},       // 20 3 - 8d'
+    {kMul, kT1, kDp, kE, 0},      // 21 d' e
+    {kMul, kT0, kT1, kT0, 0},     // 22 d' e (3 - 8d')
+    {kRsb, kN14, kT0, 0, 1},      // 23 N14
+    {kRecip, kT0, kD, 0, 0},      // 24 1 / D
+    {kMul, kR14, kN14, kT0, 0},   // 25 N14 / D
+    {kMul, kR15, kN15, kT0, 0},   // 26 N15 / D
+    {kAdd, kX, kX, kDx, 0},       // 27 X1
+    {kAdd, kA, kA, kDa, 0},       // 28 A1
+    {kPos, 0, kX, kK0, 0},        // 29 X steps
+    {kPos, 1, kX, kK1, 0},        // 30 Y steps
+    {kPos, 2, kX, kK2, 0},        // 31 Z steps
+    {kPos, 3, kA, kK3, 0},        // 32 A steps
+    {kEmit, 0, 0, 0, 0},          // 33 odd point
+    {kMul, kDx, kR14, kDx, 0},    // 34 dX21
+    {kMul, kDa, kR15, kDa, 0},    // 35 dA21
+    {kAdd, kX, kX, kDx, 0},       // 36 X2
+    {kAdd, kA, kA, kDa, 0},       // 37 A2
+    {kPos, 0, kX, kK0, 0},        // 38
+    {kPos, 1, kX, kK1, 0},        // 39
+    {kPos, 2, kX, kK2, 0},        // 40
+    {kPos, 3, kA, kK3, 0},        // 41
+    {kEmit, 0, 0, 0, 1},          // 42 even point; X2 >= x_end ends the curve
+};
+inline constexpr int kProgramLength = sizeof(kProgram) / sizeof(kProgram[0]);
+}  // namespace log_uop
+
+template <class CfgT>
+class LogStepper {
+ public:
+  using Cfg = CfgT;
+  static constexpr int AXES = Cfg::AXES;
+  static constexpr int INT_W = Cfg::INT_W;
+  static constexpr int FRAC_W = Cfg::FRAC_W;
+  static constexpr int W = INT_W + FRAC_W;
+  static constexpr int MUL_K = Cfg::MUL_K;
+  static constexpr int SEG_W = Cfg::SEG_W;
+  static constexpr int POS_W = Cfg::POS_W;
+  static constexpr int TIM_W = Cfg::TIM_W;
+  static constexpr int FEED_W = Cfg::FEED_W;
+  static_assert(AXES == 4, "log_stepper drives X, Y, Z and A");
+  static_assert(FRAC_W >= 18 && INT_W >= 4 && W <= 62, "word format out of range");
+  static_assert(MUL_K >= 1 && MUL_K <= W, "MUL_K out of range");
+  static_assert(SEG_W >= 2 && SEG_W <= POS_W && POS_W <= 62, "SEG_W/POS_W out of range");
+  static constexpr int MUL_CYC = (W + MUL_K - 1) / MUL_K;  // clocks of a multiply
+  static constexpr int SQRT_CYC = (W + FRAC_W + 1) / 2;    // root bits of sqrt(x 2^F)
+  static constexpr int RECIP_CYC = FRAC_W + 1;             // quotient bits of 2^2F / x
+  static_assert(SQRT_CYC + 3 <= 64, "the square root's remainder needs SQRT_CYC + 3 bits");
+  static constexpr int CNT_W = 7;
+  static_assert(SQRT_CYC < 128 && RECIP_CYC < 128 && MUL_CYC < 128, "op counter too narrow");
+
+  using word_t = sc_dt::sc_uint<W>;
+  using prod_t = sc_dt::sc_biguint<2 * W + 1>;
+  using rem_t = sc_dt::sc_uint<64>;  // the sqrt/recip remainder (<= max(SQRT_CYC + 3, W + 1) bits)
+  using lpos_t = sc_dt::sc_uint<POS_W>;
+  using seg_t = sc_dt::sc_uint<SEG_W>;
+
+  // The fine stage: the dda_line engine over the four axes, SEG_W-bit
+  // segment deltas, with the shared step/dir stage (hls/dda_line.h).
+  struct FineCfg {
+    static constexpr int AXES = 4, ACC_W = SEG_W, POS_W = CfgT::POS_W, TIM_W = CfgT::TIM_W,
+                         FEED_W = CfgT::FEED_W;
+  };
+  using Fine = DdaLine<FineCfg>;
+
+  // The core's own inputs: the command words (models/log_stepper_model.h).
+  struct Own {
+    word_t b = 0, ab = 0, dl = 0, x_end = 0;
+    word_t k[4] = {};
+  };
+  using Inputs = StepperInputs<Own, FEED_W, TIM_W>;
+  using Outputs = StepperOutputs<AXES, POS_W>;
+
+  // The own ports of the SC_MODULE face (hls/stepper_module.h).
+  struct OwnPorts {
+    sc_core::sc_in<pin_t<W>> cmd_b_i{"cmd_b_i"}, cmd_ab_i{"cmd_ab_i"}, cmd_dl_i{"cmd_dl_i"},
+        cmd_x_end_i{"cmd_x_end_i"};
+    sc_core::sc_in<pin_t<4 * W>> cmd_k_i{"cmd_k_i"};
+    void read(Own& own) const {
+      own.b = cmd_b_i.read();
+      own.ab = cmd_ab_i.read();
+      own.dl = cmd_dl_i.read();
+      own.x_end = cmd_x_end_i.read();
+      const pin_t<4 * W>& k = cmd_k_i.read();
+      for (int i = 0; i < 4; ++i) own.k[i] = pin_field<4 * W>(k, i * W, W);
+    }
+  };
+
+  LogStepper() { reset(); }
+
+  void reset() {
+    act_q_ = false;
+    pc_q_ = 0;
+    cnt_q_ = 0;
+    for (int r = 0; r < log_uop::kRegs; ++r) reg_q_[r] = 0;
+    acc_q_ = 0;
+    rem_q_ = 0;
+    res_q_ = 0;
+    for (int i = 0; i < 4; ++i) {
+      lnew_q_[i] = 0;
+      lprev_q_[i] = 0;
+      seg_q_[i] = 0;
+    }
+    seg_valid_q_ = false;
+    seg_last_q_ = false;
+    tag_n_q_ = 0;
+    tag_q_[0] = tag_q_[1] = false;
+    points_q_ = 0;
+    fine_.reset();
+  }
+
+  void tick(const Inputs& in) {
+    if (!in.rst_n) {
+      reset();
+      return;
+    }
+    const typename Fine::Outputs fo = fine_.outputs();
+    const bool seg_take = seg_valid_q_ && fo.cmd_ready;
+    const bool seg_free = !seg_valid_q_;  // the register as the engine sees it this clock
+    const bool pop = fo.done;
+    if (act_q_ && points_q_ && !seg_valid_q_ && !fo.busy) ++underrun_clocks_;
+
+    typename Fine::Inputs fin;
+    fin.rst_n = true;
+    fin.cmd_valid = seg_valid_q_;
+    for (int i = 0; i < 4; ++i) fin.cmd.delta[i] = seg_q_[i];
+    fin.cmd.half_preload = true;
+    fin.feed = in.feed;
+    fin.timing = in.timing;
+    fin.abort = in.abort;
+    fine_.tick(fin);
+
+    // Tags of the segments in the fine stage (at most two: its buffer and
+    // its engine), oldest first: does the segment end its curve.
+    if (in.abort) {
+      tag_n_q_ = 0;
+      tag_q_[0] = tag_q_[1] = false;
+    } else {
+      int n = tag_n_q_;
+      if (pop) {
+        tag_q_[0] = tag_q_[1];
+        tag_q_[1] = false;
+        --n;
+      }
+      if (seg_take) {
+        tag_q_[n] = seg_last_q_;
+        ++n;
+      }
+      tag_n_q_ = n;
+    }
+    if (seg_take || in.abort) seg_valid_q_ = false;
+
+    if (in.abort) {
+      act_q_ = false;
+    } else if (act_q_) {
+      step_engine(seg_free);
+    } else if (in.cmd_valid) {
+      load(in.cmd);
+    }
+  }
+
+  Outputs outputs() const {
+    Outputs o = fine_.outputs();
+    o.cmd_ready = !act_q_;
+    o.busy = o.busy || act_q_ || seg_valid_q_;
+    o.done = o.done && tag_q_[0];
+    return o;
+  }
+
+  // Clocks on which the fine stage stood idle waiting for the coarse engine
+  // in the middle of a curve (a diagnostic of the model, not a pin).
+  uint64_t underrun_clocks() const { return underrun_clocks_; }
+  // Coarse points emitted since construction (a diagnostic, not a pin).
+  uint64_t points_emitted() const { return points_emitted_; }
+
+ private:
+  word_t rd(int r) const {
+    if (r == log_uop::kOne) return word_t(word_t(1) << FRAC_W);
+    if (r == log_uop::kThree) return word_t(word_t(3) << FRAC_W);
+    return reg_q_[r];
+  }
+
+  void load(const Own& c) {
+    act_q_ = true;
+    pc_q_ = 0;
+    cnt_q_ = 0;
+    reg_q_[log_uop::kB] = c.b;
+    reg_q_[log_uop::kAb] = c.ab;
+    reg_q_[log_uop::kDl] = c.dl;
+    reg_q_[log_uop::kXEnd] = c.x_end;
+    for (int i = 0; i < 4; ++i) {
+      reg_q_[log_uop::kK0 + i] = c.k[i];
+      lprev_q_[i] = 0;
+    }
+    reg_q_[log_uop::kX] = 0;
+    reg_q_[log_uop::kA] = 0;
+    points_q_ = 0;
+  }
+
+  void next_op() {
+    pc_q_ = pc_q_ + 1;
+    cnt_q_ = 0;
+  }
+
+  // One clock of the operation at pc_q_; `seg_free`: the segment register
+  // was empty before this edge (a segment the fine stage takes on this edge
+  // frees it from the next clock on).
+  void step_engine(bool seg_free) {
+    const log_uop::Uop u = log_uop::kProgram[pc_q_.to_uint()];
+    const word_t s1 = rd(u.s1), s2 = rd(u.s2);
+    const unsigned c = cnt_q_.to_uint();
+    switch (u.op) {
+      case log_uop::kMul:
+      case log_uop::kPos: {
+        // acc += s1 * (MUL_K bits of s2 from bit MUL_K c) << MUL_K c.
+        const sc_dt::sc_uint<MUL_K> digit = word_t(s2 >> (MUL_K * c)).range(MUL_K - 1, 0);
+        prod_t pp = prod_t(s1) * prod_t(digit);
+        pp <<= MUL_K * c;
+        const prod_t acc = (c == 0 ? prod_t(0) : acc_q_) + pp;
+        if (c + 1 < MUL_CYC) {
+          acc_q_ = acc;
+          cnt_q_ = c + 1;
+        } else if (u.op == log_uop::kMul) {
+          reg_q_[u.dst] = word_t((acc >> FRAC_W).range(W - 1, 0).to_uint64());
+          next_op();
+        } else {
+          constexpr int SH = 2 * FRAC_W - 16;  // models::kLogPosShift = 16
+          const prod_t rounded = acc + (prod_t(1) << (SH - 1));
+          lnew_q_[u.dst] = lpos_t((rounded >> SH).range(POS_W - 1, 0).to_uint64());
+          next_op();
+        }
+        break;
+      }
+      case log_uop::kSqrt: {
+        // Digit i = SQRT_CYC-1-c of n = s1 2^F: bits 2i+1..2i of n, i.e.
+        // bits 2i+1-F..2i-F of s1 (zero below bit 0).
+        const int i = SQRT_CYC - 1 - static_cast<int>(c);
+        const int lo = 2 * i - FRAC_W;
+        unsigned pair = 0;
+        if (lo + 1 >= 0 && lo + 1 < W && s1[lo + 1]) pair |= 2;
+        if (lo >= 0 && lo < W && s1[lo]) pair |= 1;
+        const rem_t rem_in = c == 0 ? rem_t(0) : rem_q_;
+        const rem_t root_in = c == 0 ? rem_t(0) : res_q_;
+        const rem_t rem2 = (rem_in << 2) | pair;
+        const rem_t trial = (root_in << 2) | 1;
+        rem_t root;
+        if (rem2 >= trial) {
+          rem_q_ = rem2 - trial;
+          root = (root_in << 1) | 1;
+        } else {
+          rem_q_ = rem2;
+          root = root_in << 1;
+        }
+        res_q_ = root;
+        if (c + 1 < SQRT_CYC) {
+          cnt_q_ = c + 1;
+        } else {
+          reg_q_[u.dst] = word_t(root.to_uint64());
+          next_op();
+        }
+        break;
+      }
+      case log_uop::kRecip: {
+        const rem_t rem_in = c == 0 ? rem_t(rem_t(1) << (FRAC_W - 1)) : rem_q_;
+        const rem_t res_in = c == 0 ? rem_t(0) : res_q_;
+        const rem_t rem2 = rem_in << 1;
+        const rem_t d = rem_t(s1.to_uint64());
+        rem_t res;
+        if (rem2 >= d) {
+          rem_q_ = rem2 - d;
+          res = (res_in << 1) | 1;
+        } else {
+          rem_q_ = rem2;
+          res = res_in << 1;
+        }
+        res_q_ = res;
+        if (c + 1 < RECIP_CYC) {
+          cnt_q_ = c + 1;
+        } else {
+          reg_q_[u.dst] = word_t(res.to_uint64());
+          next_op();
+        }
+        break;
+      }
+      case log_uop::kAdd:
+        reg_q_[u.dst] = s1 + s2;
+        next_op();
+        break;
+      case log_uop::kRsb:
+        reg_q_[u.dst] = rd(log_uop::kThree) - word_t(s1 << u.sh);
+        next_op();
+        break;
+      case log_uop::kEmit:
+        if (seg_free) {
+          const bool last = u.sh && rd(log_uop::kX) >= rd(log_uop::kXEnd);
+          for (int i = 0; i < 4; ++i) {
+            seg_q_[i] = seg_t(lpos_t(lnew_q_[i] - lprev_q_[i]).range(SEG_W - 1, 0).to_uint64());
+            lprev_q_[i] = lnew_q_[i];
+          }
+          seg_valid_q_ = true;
+          seg_last_q_ = last;
+          points_q_ = true;
+          ++points_emitted_;
+          if (last) {
+            act_q_ = false;
+          } else if (u.sh) {
+            pc_q_ = log_uop::kCycleStart;
+            cnt_q_ = 0;
+          } else {
+            next_op();
+          }
+        }
+        break;
+    }
+  }
+
+  // Coarse engine.
+  bool act_q_;                       // a curve is being computed
+  sc_dt::sc_uint<6> pc_q_;           // the program entry running
+  sc_dt::sc_uint<CNT_W> cnt_q_;      // clock within a multi-clock operation
+  word_t reg_q_[log_uop::kRegs];     // registers 2.. (0 and 1 are constants)
+  prod_t acc_q_;                     // the multiplier's partial product
+  rem_t rem_q_, res_q_;              // sqrt/recip remainder and root/quotient so far
+  lpos_t lnew_q_[4], lprev_q_[4];    // lattice positions of this point and the last
+  bool points_q_;                    // a point of this curve has been emitted (diagnostic)
+  // Segment register (the FIFO's entry in front of the fine stage's buffer).
+  seg_t seg_q_[4];
+  bool seg_valid_q_, seg_last_q_;
+  // Tags of the segments in the fine stage.
+  sc_dt::sc_uint<2> tag_n_q_;
+  bool tag_q_[2];
+  Fine fine_;
+  // Diagnostics (not hardware): counted by the model, never reset.
+  uint64_t underrun_clocks_ = 0;
+  uint64_t points_emitted_ = 0;
+};
+
+}  // namespace hwinterp::hls

@@ -1,0 +1,5 @@
+stepdir_axis.sv
+step_stage.sv
+feed_accum.sv
+dda_line.sv
+log_stepper.sv

@@ -1,0 +1,407 @@
+// log_stepper: the odd-even third-order logarithmic-curve stepper of paper
+// 001_46110e999325a38e.txt in hardware, driving X, Y, Z and A.
+//
+// command -> coarse engine (fixed point) -> segment register -> fine stage
+// (dda_line: its buffer, DDA engine, feed and step/dir stage) -> step/dir
+//
+// Command: one curve A = a ln(1 + b X), in unsigned fixed-point words of
+// INT_W integer and FRAC_W fraction bits (W = INT_W + FRAC_W):
+//   cmd_b_i      b = 2 tan C / D1 (1/mm)
+//   cmd_ab_i     a b = 2 tan S / D1 (rad/mm)
+//   cmd_dl_i     dl, the instruction interpolation length (mm)
+//   cmd_x_end_i  the stop rule: whole odd+even cycles until an even point
+//                has X >= x_end (mm)
+//   cmd_k_i      per axis (k_i at [i*W +: W]) steps per unit / 2^16: X, Y and
+//                Z per mm of X (Y = X tan C and Z = X tan C sin r fold tan C
+//                and sin r in), A per rad.
+// The curve starts where the axes are. cmd_ready_o (a register) is high
+// while no curve is being computed: the next curve's command is taken while
+// the fine stage still runs the last segments of the previous one.
+//
+// Coarse engine: a micro-programmed datapath over a register file, one
+// operation at a time (the program is the `case (pc_q)` below, the same
+// table as hls/log_stepper.h): a multiplier that adds MUL_K bits of its
+// second operand a clock (MUL_CYC = ceil(W / MUL_K) clocks, the exact
+// product truncated to the format), a square root and a reciprocal by digit
+// recurrence (one result bit a clock: SQRT_CYC = ceil((W + FRAC_W) / 2) and
+// FRAC_W + 1 clocks), adds and 3 - (x << s) in one clock.
+// models/log_stepper_model.h gives the arithmetic bit for bit, the
+// normalised even step (one reciprocal for both of Eq. 14's and Eq. 15's
+// ratios) and the accepted commands. A point's lattice positions are
+// rounded from its absolute X and A (pos = round(x k 2^16)), so rounding
+// never accumulates; the segment delta is the difference to the previous
+// point's (all four axes move forward: every delta is >= 0).
+//
+// Clocks per odd+even cycle (two points), nothing waiting:
+//   25 MUL_CYC + SQRT_CYC + 2 (FRAC_W + 1) + 13.
+//
+// Pipeline: the coarse engine computes the next point while the fine stage
+// runs the previous ones. Between them sit the segment register and the fine
+// stage's one-entry buffer (a two-entry FIFO): the engine stops at a point
+// until the segment register is free. The fine stage waits on the coarse
+// engine only when a segment runs fewer clocks than the engine needs for a
+// point: a segment whose largest delta has n bits runs 2^n DDA iterations,
+// 2^n 2^FEED_W / feed_i clocks.
+//
+// Fine stage: dda_line (rtl/dda_line.sv) with AXES = 4, ACC_W = SEG_W and
+// half preload: each segment is a DDA line, exact at its end, within the
+// DDA bound of it in between. Its step/dir stage, position counters, feed
+// and timing inputs are this core's.
+//
+// Abort: abort_i high at a clock edge stops the coarse engine, empties the
+// segment register and aborts the fine stage (rtl/dda_line.sv: the running
+// segment ends, its buffer is dropped, a pulse already high keeps its
+// length); a command offered on that edge is not taken. No done_o for the
+// aborted curve. The core takes commands again from the next clock on.
+//
+// Status: busy_o while a curve is being computed, a segment waits or the
+// fine stage is busy; done_o pulses for one clock with the last iteration of
+// a curve's last segment; step_o, dir_o and pos_o are the fine stage's.
+module log_stepper #(
+  parameter int AXES   = 4,   // X, Y, Z, A (fixed)
+  parameter int INT_W  = 12,  // integer bits of the coarse engine's words
+  parameter int FRAC_W = 32,  // fraction bits of the coarse engine's words
+  parameter int MUL_K  = 11,  // multiplier bits per clock
+  parameter int SEG_W  = 16,  // width of the signed segment deltas (the fine stage's ACC_W)
+  parameter int POS_W  = 32,  // position counter width
+  parameter int TIM_W  = 16,  // step/dir timing settings width
+  parameter int FEED_W = 16   // feed accumulator width
+) (
+  input  logic                  clk_i,
+  input  logic                  rst_ni,
+  // Command stream: one curve per command
+  input  logic                  cmd_valid_i,
+  output logic                  cmd_ready_o,
+  input  logic [INT_W+FRAC_W-1:0]      cmd_b_i,      // b (1/mm)
+  input  logic [INT_W+FRAC_W-1:0]      cmd_ab_i,     // a b (rad/mm)
+  input  logic [INT_W+FRAC_W-1:0]      cmd_dl_i,     // dl (mm)
+  input  logic [INT_W+FRAC_W-1:0]      cmd_x_end_i,  // stop at an even point with X >= x_end (mm)
+  input  logic [4*(INT_W+FRAC_W)-1:0]  cmd_k_i,      // steps per unit / 2^16, axis i at [i*W +: W]
+  // Run-time settings
+  input  logic [FEED_W:0]       feed_i,
+  input  logic [TIM_W-1:0]      step_len_i,
+  input  logic [TIM_W-1:0]      step_space_i,
+  input  logic [TIM_W-1:0]      dir_setup_i,
+  input  logic [TIM_W-1:0]      dir_hold_i,
+  input  logic                  abort_i,  // end the curve, drop its segments (one clock)
+  // Step/dir and status
+  output logic [AXES-1:0]       step_o,
+  output logic [AXES-1:0]       dir_o,
+  output logic [AXES*POS_W-1:0] pos_o,
+  output logic                  busy_o,
+  output logic                  done_o
+);
+  localparam int W         = INT_W + FRAC_W;
+  localparam int MulCyc    = (W + MUL_K - 1) / MUL_K;
+  localparam int SqrtCyc   = (W + FRAC_W + 1) / 2;
+  localparam int RecipCyc  = FRAC_W + 1;
+  localparam int RemW      = (SqrtCyc + 3 > W + 1) ? SqrtCyc + 3 : W + 1;
+  localparam int ProdW     = 2 * W + 1;
+  localparam int PosSh     = 2 * FRAC_W - 16;  // models::kLogPosShift = 16
+  localparam int NRegs     = 28;
+  localparam int CycleStart = 2;
+
+  // Operations and registers (hls/log_stepper.h, namespace log_uop).
+  localparam logic [2:0] OpMul = 3'd0, OpSqrt = 3'd1, OpRecip = 3'd2, OpAdd = 3'd3,
+                         OpRsb = 3'd4, OpPos = 3'd5, OpEmit = 3'd6;
+  localparam logic [4:0] ROne = 5'd0, RThree = 5'd1, RB = 5'd2, RAb = 5'd3, RDl = 5'd4,
+                         RXEnd = 5'd5, RK0 = 5'd6, RK1 = 5'd7, RK2 = 5'd8, RK3 = 5'd9,
+                         RAb2 = 5'd10, RBdl = 5'd11, RX = 5'd12, RA = 5'd13, RQ = 5'd14,
+                         RU = 5'd15, RDx = 5'd16, RDa = 5'd17, RS2 = 5'd18, RDp = 5'd19,
+                         RE = 5'd20, RD = 5'd21, RN15 = 5'd22, RN14 = 5'd23, RR14 = 5'd24,
+                         RR15 = 5'd25, RT0 = 5'd26, RT1 = 5'd27;
+
+  // ---------------------------------------------------------------------------
+  // Program ROM.
+  logic [5:0] pc_q, pc_d;
+  logic [2:0] op;
+  logic [4:0] dst, src1, src2;
+  logic [1:0] sh;
+
+  always_comb begin
+    op = OpMul; dst = RT0; src1 = ROne; src2 = ROne; sh = 2'd0;
+    unique case (pc_q)
+      6'd0:  begin op = OpMul;   dst = RAb2; src1 = RAb;  src2 = RAb;  end
+      6'd1:  begin op = OpMul;   dst = RBdl; src1 = RB;   src2 = RDl;  end
+      6'd2:  begin op = OpMul;   dst = RT0;  src1 = RB;   src2 = RX;   end
+      6'd3:  begin op = OpAdd;   dst = RQ;   src1 = RT0;  src2 = ROne; end
+      6'd4:  begin op = OpMul;   dst = RT0;  src1 = RQ;   src2 = RQ;   end
+      6'd5:  begin op = OpAdd;   dst = RT0;  src1 = RT0;  src2 = RAb2; end
+      6'd6:  begin op = OpSqrt;  dst = RT0;  src1 = RT0;  end
+      6'd7:  begin op = OpRecip; dst = RU;   src1 = RT0;  end
+      6'd8:  begin op = OpMul;   dst = RT0;  src1 = RQ;   src2 = RU;   end
+      6'd9:  begin op = OpMul;   dst = RDx;  src1 = RDl;  src2 = RT0;  end
+      6'd10: begin op = OpMul;   dst = RT1;  src1 = RAb;  src2 = RU;   end
+      6'd11: begin op = OpMul;   dst = RDa;  src1 = RDl;  src2 = RT1;  end
+      6'd12: begin op = OpMul;   dst = RS2;  src1 = RT1;  src2 = RT1;  end
+      6'd13: begin op = OpMul;   dst = RDp;  src1 = RBdl; src2 = RU;   end
+      6'd14: begin op = OpMul;   dst = RE;   src1 = RDp;  src2 = RS2;  end
+      6'd15: begin op = OpRsb;   dst = RT0;  src1 = RDp;  sh = 2'd2;   end
+      6'd16: begin op = OpMul;   dst = RT1;  src1 = RE;   src2 = RT0;  end
+      6'd17: begin op = OpRsb;   dst = RD;   src1 = RT1;  sh = 2'd1;   end
+      6'd18: begin op = OpMul;   dst = RT0;  src1 = RDp;  src2 = RT0;  end
+      6'd19: begin op = OpRsb;   dst = RN15; src1 = RT0;  sh = 2'd1;   end
+      6'd20: begin op = OpRsb;   dst = RT0;  src1 = RDp;  sh = 2'd3;   end
+      6'd21: begin op = OpMul;   dst = RT1;  src1 = RDp;  src2 = RE;   end
+      6'd22: begin op = OpMul;   dst = RT0;  src1 = RT1;  src2 = RT0;  end
+      6'd23: begin op = OpRsb;   dst = RN14; src1 = RT0;  sh = 2'd1;   end
+      6'd24: begin op = OpRecip; dst = RT0;  src1 = RD;   end
+      6'd25: begin op = OpMul;   dst = RR14; src1 = RN14; src2 = RT0;  end
+      6'd26: begin op = OpMul;   dst = RR15; src1 = RN15; src2 = RT0;  end
+      6'd27: begin op = OpAdd;   dst = RX;   src1 = RX;   src2 = RDx;  end
+      6'd28: begin op = OpAdd;   dst = RA;   src1 = RA;   src2 = RDa;  end
+      6'd29: begin op = OpPos;   dst = 5'd0; src1 = RX;   src2 = RK0;  end
+      6'd30: begin op = OpPos;   dst = 5'd1; src1 = RX;   src2 = RK1;  end
+      6'd31: begin op = OpPos;   dst = 5'd2; src1 = RX;   src2 = RK2;  end
+      6'd32: begin op = OpPos;   dst = 5'd3; src1 = RA;   src2 = RK3;  end
+      6'd33: begin op = OpEmit;  end
+      6'd34: begin op = OpMul;   dst = RDx;  src1 = RR14; src2 = RDx;  end
+      6'd35: begin op = OpMul;   dst = RDa;  src1 = RR15; src2 = RDa;  end
+      6'd36: begin op = OpAdd;   dst = RX;   src1 = RX;   src2 = RDx;  end
+      6'd37: begin op = OpAdd;   dst = RA;   src1 = RA;   src2 = RDa;  end
+      6'd38: begin op = OpPos;   dst = 5'd0; src1 = RX;   src2 = RK0;  end
+      6'd39: begin op = OpPos;   dst = 5'd1; src1 = RX;   src2 = RK1;  end
+      6'd40: begin op = OpPos;   dst = 5'd2; src1 = RX;   src2 = RK2;  end
+      6'd41: begin op = OpPos;   dst = 5'd3; src1 = RA;   src2 = RK3;  end
+      6'd42: begin op = OpEmit;  sh = 2'd1; end
+      default: ;
+    endcase
+  end
+
+  // ---------------------------------------------------------------------------
+  // Register file: registers 2..NRegs-1, flat (W bits each); 0 and 1 read as
+  // the constants 1.0 and 3.0.
+  logic [NRegs*W-1:0] reg_q, reg_d;
+  logic [W-1:0]       s1, s2;
+
+  function automatic logic [W-1:0] rd(input logic [NRegs*W-1:0] regs, input logic [4:0] r);
+    if (r == ROne) return W'(1) << FRAC_W;
+    if (r == RThree) return W'(3) << FRAC_W;
+    return regs[r*W +: W];
+  endfunction
+
+  assign s1 = rd(reg_q, src1);
+  assign s2 = rd(reg_q, src2);
+
+  // ---------------------------------------------------------------------------
+  // Datapath units (their state: acc_q, rem_q, res_q).
+  logic                    act_q, act_d;
+  logic [6:0]              cnt_q, cnt_d;
+  logic [ProdW-1:0]        acc_q, acc_d, acc_sum, pp, pos_round;
+  logic [MUL_K-1:0]        digit;
+  logic [RemW-1:0]         rem_q, rem_d, res_q, res_d;
+  // The remainder and the partial result never reach their top bit before
+  // the shift (they stay below the divisor / 2 root + 1): it is not read.
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic [RemW-1:0]         rem_in, res_in;
+  /* verilator lint_on UNUSEDSIGNAL */
+  logic [RemW-1:0]         rem2, trial;
+  logic [1:0]              pair;
+  int                      lo;
+  logic                    cnt_last;
+  logic [4*POS_W-1:0]      lnew_q, lnew_d, lprev_q, lprev_d;
+  // Segment register and the tags of the segments in the fine stage.
+  logic [4*SEG_W-1:0]      seg_q, seg_d;
+  logic                    seg_valid_q, seg_valid_d, seg_last_q, seg_last_d;
+  logic [1:0]              tag_n_q, tag_n_d;
+  logic [1:0]              tag_q, tag_d;
+  logic                    emit_last;
+  logic                    cmd_take;
+
+  // Fine stage outputs.
+  logic                    fine_ready, fine_busy, fine_done;
+
+  assign digit     = MUL_K'(s2 >> (MUL_K * int'(cnt_q)));
+  assign pp        = (ProdW'(s1) * ProdW'(digit)) << (MUL_K * int'(cnt_q));
+  assign acc_sum   = (cnt_q == '0 ? '0 : acc_q) + pp;
+  assign pos_round = acc_sum + (ProdW'(1) << (PosSh - 1));
+  assign emit_last = sh[0] && (rd(reg_q, RX) >= rd(reg_q, RXEnd));
+  assign cmd_take  = cmd_valid_i && !act_q && !abort_i;
+
+  always_comb begin
+    // Digit i = SqrtCyc-1-cnt of n = s1 2^FRAC_W: bits 2i+1..2i of n.
+    lo = 2 * (SqrtCyc - 1 - int'(cnt_q)) - FRAC_W;
+    pair = 2'b00;
+    if (lo + 1 >= 0 && lo + 1 < W) pair[1] = s1[lo + 1];
+    if (lo >= 0 && lo < W) pair[0] = s1[lo];
+    rem_in = '0;
+    res_in = (cnt_q == '0) ? '0 : res_q;
+    rem2   = '0;
+    trial  = '0;
+    if (op == OpSqrt) begin
+      rem_in = (cnt_q == '0) ? '0 : rem_q;
+      rem2   = {rem_in[RemW-3:0], pair};
+      trial  = {res_in[RemW-3:0], 2'b01};
+    end else begin
+      rem_in = (cnt_q == '0) ? RemW'(1) << (FRAC_W - 1) : rem_q;
+      rem2   = {rem_in[RemW-2:0], 1'b0};
+      trial  = RemW'(s1);
+    end
+  end
+
+  always_comb begin
+    act_d       = act_q;
+    pc_d        = pc_q;
+    cnt_d       = cnt_q;
+    reg_d       = reg_q;
+    acc_d       = acc_q;
+    rem_d       = rem_q;
+    res_d       = res_q;
+    lnew_d      = lnew_q;
+    lprev_d     = lprev_q;
+    seg_d       = seg_q;
+    seg_last_d  = seg_last_q;
+    seg_valid_d = seg_valid_q && !(fine_ready || abort_i);
+    cnt_last    = 1'b0;
+    if (abort_i) begin
+      act_d = 1'b0;
+    end else if (act_q) begin
+      unique case (op)
+        OpMul, OpPos: begin
+          cnt_last = (int'(cnt_q) == MulCyc - 1);
+          acc_d = acc_sum;
+          if (cnt_last && op == OpMul) reg_d[dst*W +: W] = W'(acc_sum >> FRAC_W);
+          if (cnt_last && op == OpPos) lnew_d[dst[1:0]*POS_W +: POS_W] = POS_W'(pos_round >> PosSh);
+        end
+        OpSqrt, OpRecip: begin
+          cnt_last = (int'(cnt_q) == (op == OpSqrt ? SqrtCyc : RecipCyc) - 1);
+          if (rem2 >= trial) begin
+            rem_d = rem2 - trial;
+            res_d = {res_in[RemW-2:0], 1'b1};
+          end else begin
+            rem_d = rem2;
+            res_d = {res_in[RemW-2:0], 1'b0};
+          end
+          if (cnt_last) reg_d[dst*W +: W] = W'(res_d);
+        end
+        OpAdd: begin
+          cnt_last = 1'b1;
+          reg_d[dst*W +: W] = s1 + s2;
+        end
+        OpRsb: begin
+          cnt_last = 1'b1;
+          reg_d[dst*W +: W] = rd(reg_q, RThree) - (s1 << sh);
+        end
+        OpEmit: begin
+          if (!seg_valid_q) begin
+            for (int i = 0; i < 4; i++)
+              seg_d[i*SEG_W +: SEG_W] =
+                  SEG_W'(lnew_q[i*POS_W +: POS_W] - lprev_q[i*POS_W +: POS_W]);
+            lprev_d     = lnew_q;
+            seg_valid_d = 1'b1;
+            seg_last_d  = emit_last;
+            if (emit_last) act_d = 1'b0;
+            else if (sh[0]) pc_d = 6'(CycleStart);
+            else pc_d = pc_q + 6'd1;
+            cnt_d = '0;
+          end
+        end
+        default: ;
+      endcase
+      if (op != OpEmit) begin
+        if (cnt_last) begin
+          pc_d  = pc_q + 6'd1;
+          cnt_d = '0;
+        end else begin
+          cnt_d = cnt_q + 7'd1;
+        end
+      end
+    end else if (cmd_take) begin
+      act_d = 1'b1;
+      pc_d  = '0;
+      cnt_d = '0;
+      reg_d[RB*W +: W]    = cmd_b_i;
+      reg_d[RAb*W +: W]   = cmd_ab_i;
+      reg_d[RDl*W +: W]   = cmd_dl_i;
+      reg_d[RXEnd*W +: W] = cmd_x_end_i;
+      for (int i = 0; i < 4; i++) reg_d[(int'(RK0) + i)*W +: W] = cmd_k_i[i*W +: W];
+      reg_d[RX*W +: W] = '0;
+      reg_d[RA*W +: W] = '0;
+      lprev_d = '0;
+    end
+  end
+
+  // Tags: does the segment end its curve; oldest (tag_q[0]) first.
+  always_comb begin
+    logic [1:0] n;
+    logic [1:0] t;
+    n = tag_n_q;
+    t = tag_q;
+    if (fine_done) begin
+      t = {1'b0, t[1]};
+      n = n - 2'd1;
+    end
+    if (seg_valid_q && fine_ready) begin
+      t[n[0]] = seg_last_q;
+      n = n + 2'd1;
+    end
+    tag_n_d = abort_i ? 2'd0 : n;
+    tag_d   = abort_i ? 2'b00 : t;
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      act_q       <= 1'b0;
+      pc_q        <= '0;
+      cnt_q       <= '0;
+      reg_q       <= '0;
+      acc_q       <= '0;
+      rem_q       <= '0;
+      res_q       <= '0;
+      lnew_q      <= '0;
+      lprev_q     <= '0;
+      seg_q       <= '0;
+      seg_valid_q <= 1'b0;
+      seg_last_q  <= 1'b0;
+      tag_n_q     <= '0;
+      tag_q       <= '0;
+    end else begin
+      act_q       <= act_d;
+      pc_q        <= pc_d;
+      cnt_q       <= cnt_d;
+      reg_q       <= reg_d;
+      acc_q       <= acc_d;
+      rem_q       <= rem_d;
+      res_q       <= res_d;
+      lnew_q      <= lnew_d;
+      lprev_q     <= lprev_d;
+      seg_q       <= seg_d;
+      seg_valid_q <= seg_valid_d;
+      seg_last_q  <= seg_last_d;
+      tag_n_q     <= tag_n_d;
+      tag_q       <= tag_d;
+    end
+  end
+
+  // ---------------------------------------------------------------------------
+  // Fine stage: the dda_line core over the four axes, half preload.
+  dda_line #(
+    .AXES  (4),
+    .ACC_W (SEG_W),
+    .POS_W (POS_W),
+    .TIM_W (TIM_W),
+    .FEED_W(FEED_W)
+  ) u_fine (
+    .clk_i,
+    .rst_ni,
+    .cmd_valid_i   (seg_valid_q),
+    .cmd_ready_o   (fine_ready),
+    .cmd_delta_i   (seg_q),
+    .feed_i,
+    .half_preload_i(1'b1),
+    .step_len_i,
+    .step_space_i,
+    .dir_setup_i,
+    .dir_hold_i,
+    .abort_i,
+    .step_o,
+    .dir_o,
+    .pos_o,
+    .busy_o        (fine_busy),
+    .done_o        (fine_done)
+  );
+
+  assign cmd_ready_o = !act_q;
+  assign busy_o      = act_q || seg_valid_q || fine_busy;
+  assign done_o      = fine_done && tag_q[0];
+endmodule
