@@ -100,6 +100,7 @@ module log_stepper #(
   localparam int PosSh     = 2 * FRAC_W - 16;  // models::kLogPosShift = 16
   localparam int NRegs     = 28;
   localparam int CycleStart = 2;
+  localparam int RegK0     = 6;  // RK0, as an int for the load loop
 
   // Operations and registers (hls/log_stepper.h, namespace log_uop).
   localparam logic [2:0] OpMul = 3'd0, OpSqrt = 3'd1, OpRecip = 3'd2, OpAdd = 3'd3,
@@ -174,10 +175,11 @@ module log_stepper #(
   logic [NRegs*W-1:0] reg_q, reg_d;
   logic [W-1:0]       s1, s2;
 
+  // (Assigned to its name, not `return`: Yosys 0.23 has no return statement.)
   function automatic logic [W-1:0] rd(input logic [NRegs*W-1:0] regs, input logic [4:0] r);
-    if (r == ROne) return W'(1) << FRAC_W;
-    if (r == RThree) return W'(3) << FRAC_W;
-    return regs[r*W +: W];
+    if (r == ROne) rd = W'(1) << FRAC_W;
+    else if (r == RThree) rd = W'(3) << FRAC_W;
+    else rd = regs[r*W +: W];
   endfunction
 
   assign s1 = rd(reg_q, src1);
@@ -197,7 +199,8 @@ module log_stepper #(
   /* verilator lint_on UNUSEDSIGNAL */
   logic [RemW-1:0]         rem2, trial;
   logic [1:0]              pair;
-  int                      lo;
+  integer                  lo;     // bit of s1 at the radicand digit's low bit
+  logic signed [31:0]      cnt_s;  // cnt_q as a signed number
   logic                    cnt_last;
   logic [4*POS_W-1:0]      lnew_q, lnew_d, lprev_q, lprev_d;
   // Segment register and the tags of the segments in the fine stage.
@@ -211,8 +214,9 @@ module log_stepper #(
   // Fine stage outputs.
   logic                    fine_ready, fine_busy, fine_done;
 
-  assign digit     = MUL_K'(s2 >> (MUL_K * int'(cnt_q)));
-  assign pp        = (ProdW'(s1) * ProdW'(digit)) << (MUL_K * int'(cnt_q));
+  assign cnt_s     = {25'd0, cnt_q};
+  assign digit     = MUL_K'(s2 >> (MUL_K * cnt_q));
+  assign pp        = (ProdW'(s1) * ProdW'(digit)) << (MUL_K * cnt_q);
   assign acc_sum   = (cnt_q == '0 ? '0 : acc_q) + pp;
   assign pos_round = acc_sum + (ProdW'(1) << (PosSh - 1));
   assign emit_last = sh[0] && (rd(reg_q, RX) >= rd(reg_q, RXEnd));
@@ -220,7 +224,7 @@ module log_stepper #(
 
   always_comb begin
     // Digit i = SqrtCyc-1-cnt of n = s1 2^FRAC_W: bits 2i+1..2i of n.
-    lo = 2 * (SqrtCyc - 1 - int'(cnt_q)) - FRAC_W;
+    lo = 2 * (SqrtCyc - 1 - cnt_s) - FRAC_W;
     pair = 2'b00;
     if (lo + 1 >= 0 && lo + 1 < W) pair[1] = s1[lo + 1];
     if (lo >= 0 && lo < W) pair[0] = s1[lo];
@@ -258,13 +262,13 @@ module log_stepper #(
     end else if (act_q) begin
       unique case (op)
         OpMul, OpPos: begin
-          cnt_last = (int'(cnt_q) == MulCyc - 1);
+          cnt_last = (cnt_q == 7'(MulCyc - 1));
           acc_d = acc_sum;
           if (cnt_last && op == OpMul) reg_d[dst*W +: W] = W'(acc_sum >> FRAC_W);
           if (cnt_last && op == OpPos) lnew_d[dst[1:0]*POS_W +: POS_W] = POS_W'(pos_round >> PosSh);
         end
         OpSqrt, OpRecip: begin
-          cnt_last = (int'(cnt_q) == (op == OpSqrt ? SqrtCyc : RecipCyc) - 1);
+          cnt_last = (cnt_q == (op == OpSqrt ? 7'(SqrtCyc - 1) : 7'(RecipCyc - 1)));
           if (rem2 >= trial) begin
             rem_d = rem2 - trial;
             res_d = {res_in[RemW-2:0], 1'b1};
@@ -314,7 +318,7 @@ module log_stepper #(
       reg_d[RAb*W +: W]   = cmd_ab_i;
       reg_d[RDl*W +: W]   = cmd_dl_i;
       reg_d[RXEnd*W +: W] = cmd_x_end_i;
-      for (int i = 0; i < 4; i++) reg_d[(int'(RK0) + i)*W +: W] = cmd_k_i[i*W +: W];
+      for (int i = 0; i < 4; i++) reg_d[(RegK0 + i)*W +: W] = cmd_k_i[i*W +: W];
       reg_d[RX*W +: W] = '0;
       reg_d[RA*W +: W] = '0;
       lprev_d = '0;
@@ -322,9 +326,8 @@ module log_stepper #(
   end
 
   // Tags: does the segment end its curve; oldest (tag_q[0]) first.
+  logic [1:0] n, t;
   always_comb begin
-    logic [1:0] n;
-    logic [1:0] t;
     n = tag_n_q;
     t = tag_q;
     if (fine_done) begin

@@ -47,8 +47,8 @@ TYPED_TEST(LogStepperLockstep, PaperCurveMakesThePapersPoints) {
   const CoreCheck* erpa = find_check(r[0], "erpa_rad");
   ASSERT_NE(erpa, nullptr);
   EXPECT_GT(erpa->max, 0.0);
-  RecordProperty("max_point_error_steps", std::to_string(points->max));
-  RecordProperty("cycles", std::to_string(r[0].cycles));
+  this->RecordProperty("max_point_error_steps", std::to_string(points->max));
+  this->RecordProperty("cycles", std::to_string(r[0].cycles));
 }
 
 // Seeded random parameter sets (tb/cores/log_stepper: short curves over the
@@ -121,7 +121,7 @@ TYPED_TEST(LogStepperLockstep, CoarseEngineTakesTheDocumentedClocksPerCycle) {
   for (size_t k = 3; k < e.clocks.size(); k += 2)
     EXPECT_EQ(e.clocks[k] - e.clocks[k - 2], cycle) << "point " << k + 1;
   EXPECT_GT(e.underrun, 0u) << "1-step segments at full feed outrun the coarse engine";
-  RecordProperty("clocks_per_cycle", std::to_string(cycle));
+  this->RecordProperty("clocks_per_cycle", std::to_string(cycle));
 }
 
 // The paper's curve at the n4 variant's 1000 steps/mm and per degree: every
