@@ -182,8 +182,18 @@ module log_stepper #(
     else rd = regs[r*W +: W];
   endfunction
 
-  assign s1 = rd(reg_q, src1);
-  assign s2 = rd(reg_q, src2);
+  // The two read ports as AND-OR selects (a variable part-select
+  // `reg_q[src*W +: W]` made Yosys build a 1232-bit barrel shifter per port).
+  always_comb begin
+    s1 = '0;
+    s2 = '0;
+    for (int i = 2; i < NRegs; i++) begin
+      s1 = s1 | ({W{src1 == 5'(i)}} & reg_q[i*W +: W]);
+      s2 = s2 | ({W{src2 == 5'(i)}} & reg_q[i*W +: W]);
+    end
+    s1 = s1 | ({W{src1 == ROne}} & (W'(1) << FRAC_W)) | ({W{src1 == RThree}} & (W'(3) << FRAC_W));
+    s2 = s2 | ({W{src2 == ROne}} & (W'(1) << FRAC_W)) | ({W{src2 == RThree}} & (W'(3) << FRAC_W));
+  end
 
   // ---------------------------------------------------------------------------
   // Datapath units (their state: acc_q, rem_q, res_q).
@@ -243,11 +253,51 @@ module log_stepper #(
     end
   end
 
+  // The one register-file write port: what the operation at pc_q writes on
+  // its last clock. (One port for every operation: a variable-index write
+  // per operation made Yosys build a 1232-bit shifter for each.)
+  logic [W-1:0] wdata;
+  logic         we;
+  always_comb begin
+    unique case (op)
+      OpMul:          wdata = W'(acc_sum >> FRAC_W);
+      OpSqrt, OpRecip: wdata = W'(res_d);
+      OpAdd:          wdata = s1 + s2;
+      OpRsb:          wdata = rd(reg_q, RThree) - (s1 << sh);
+      default:        wdata = '0;
+    endcase
+    we = act_q && !abort_i && cnt_last &&
+         (op == OpMul || op == OpSqrt || op == OpRecip || op == OpAdd || op == OpRsb);
+  end
+
+  // Register i: the command's word on a take (B..K3; X and A restart at 0),
+  // the write port's value when it names i.
+  for (genvar i = 2; i < NRegs; i++) begin : g_reg
+    logic [W-1:0] load;
+    logic         loads;
+    if (5'(i) == RB) begin : g_b
+      assign load = cmd_b_i;
+    end else if (5'(i) == RAb) begin : g_ab
+      assign load = cmd_ab_i;
+    end else if (5'(i) == RDl) begin : g_dl
+      assign load = cmd_dl_i;
+    end else if (5'(i) == RXEnd) begin : g_x_end
+      assign load = cmd_x_end_i;
+    end else if (i >= RegK0 && i < RegK0 + 4) begin : g_k
+      assign load = cmd_k_i[(i - RegK0)*W +: W];
+    end else begin : g_zero
+      assign load = '0;
+    end
+    assign loads = (i <= RegK0 + 3) || 5'(i) == RX || 5'(i) == RA;
+    assign reg_d[i*W +: W] = (cmd_take && loads) ? load :
+                             (we && dst == 5'(i)) ? wdata : reg_q[i*W +: W];
+  end
+  assign reg_d[2*W-1:0] = '0;  // registers 0 and 1 are constants, never stored
+
   always_comb begin
     act_d       = act_q;
     pc_d        = pc_q;
     cnt_d       = cnt_q;
-    reg_d       = reg_q;
     acc_d       = acc_q;
     rem_d       = rem_q;
     res_d       = res_q;
@@ -257,70 +307,50 @@ module log_stepper #(
     seg_last_d  = seg_last_q;
     seg_valid_d = seg_valid_q && !(fine_ready || abort_i);
     cnt_last    = 1'b0;
+    if (op == OpSqrt || op == OpRecip) begin
+      if (rem2 >= trial) begin
+        rem_d = rem2 - trial;
+        res_d = {res_in[RemW-2:0], 1'b1};
+      end else begin
+        rem_d = rem2;
+        res_d = {res_in[RemW-2:0], 1'b0};
+      end
+    end
+    unique case (op)
+      OpMul, OpPos:    cnt_last = (cnt_q == 7'(MulCyc - 1));
+      OpSqrt:          cnt_last = (cnt_q == 7'(SqrtCyc - 1));
+      OpRecip:         cnt_last = (cnt_q == 7'(RecipCyc - 1));
+      OpAdd, OpRsb:    cnt_last = 1'b1;
+      default:         cnt_last = 1'b0;
+    endcase
     if (abort_i) begin
       act_d = 1'b0;
     end else if (act_q) begin
-      unique case (op)
-        OpMul, OpPos: begin
-          cnt_last = (cnt_q == 7'(MulCyc - 1));
-          acc_d = acc_sum;
-          if (cnt_last && op == OpMul) reg_d[dst*W +: W] = W'(acc_sum >> FRAC_W);
-          if (cnt_last && op == OpPos) lnew_d[dst[1:0]*POS_W +: POS_W] = POS_W'(pos_round >> PosSh);
-        end
-        OpSqrt, OpRecip: begin
-          cnt_last = (cnt_q == (op == OpSqrt ? 7'(SqrtCyc - 1) : 7'(RecipCyc - 1)));
-          if (rem2 >= trial) begin
-            rem_d = rem2 - trial;
-            res_d = {res_in[RemW-2:0], 1'b1};
-          end else begin
-            rem_d = rem2;
-            res_d = {res_in[RemW-2:0], 1'b0};
-          end
-          if (cnt_last) reg_d[dst*W +: W] = W'(res_d);
-        end
-        OpAdd: begin
-          cnt_last = 1'b1;
-          reg_d[dst*W +: W] = s1 + s2;
-        end
-        OpRsb: begin
-          cnt_last = 1'b1;
-          reg_d[dst*W +: W] = rd(reg_q, RThree) - (s1 << sh);
-        end
-        OpEmit: begin
-          if (!seg_valid_q) begin
-            for (int i = 0; i < 4; i++)
-              seg_d[i*SEG_W +: SEG_W] =
-                  SEG_W'(lnew_q[i*POS_W +: POS_W] - lprev_q[i*POS_W +: POS_W]);
-            lprev_d     = lnew_q;
-            seg_valid_d = 1'b1;
-            seg_last_d  = emit_last;
-            if (emit_last) act_d = 1'b0;
-            else if (sh[0]) pc_d = 6'(CycleStart);
-            else pc_d = pc_q + 6'd1;
-            cnt_d = '0;
-          end
-        end
-        default: ;
-      endcase
-      if (op != OpEmit) begin
-        if (cnt_last) begin
-          pc_d  = pc_q + 6'd1;
+      if (op == OpMul || op == OpPos) acc_d = acc_sum;
+      if (op == OpPos && cnt_last) lnew_d[dst[1:0]*POS_W +: POS_W] = POS_W'(pos_round >> PosSh);
+      if (op == OpEmit) begin
+        if (!seg_valid_q) begin
+          for (int i = 0; i < 4; i++)
+            seg_d[i*SEG_W +: SEG_W] =
+                SEG_W'(lnew_q[i*POS_W +: POS_W] - lprev_q[i*POS_W +: POS_W]);
+          lprev_d     = lnew_q;
+          seg_valid_d = 1'b1;
+          seg_last_d  = emit_last;
+          if (emit_last) act_d = 1'b0;
+          else if (sh[0]) pc_d = 6'(CycleStart);
+          else pc_d = pc_q + 6'd1;
           cnt_d = '0;
-        end else begin
-          cnt_d = cnt_q + 7'd1;
         end
+      end else if (cnt_last) begin
+        pc_d  = pc_q + 6'd1;
+        cnt_d = '0;
+      end else begin
+        cnt_d = cnt_q + 7'd1;
       end
     end else if (cmd_take) begin
-      act_d = 1'b1;
-      pc_d  = '0;
-      cnt_d = '0;
-      reg_d[RB*W +: W]    = cmd_b_i;
-      reg_d[RAb*W +: W]   = cmd_ab_i;
-      reg_d[RDl*W +: W]   = cmd_dl_i;
-      reg_d[RXEnd*W +: W] = cmd_x_end_i;
-      for (int i = 0; i < 4; i++) reg_d[(RegK0 + i)*W +: W] = cmd_k_i[i*W +: W];
-      reg_d[RX*W +: W] = '0;
-      reg_d[RA*W +: W] = '0;
+      act_d   = 1'b1;
+      pc_d    = '0;
+      cnt_d   = '0;
       lprev_d = '0;
     end
   end

@@ -19,14 +19,6 @@ Json CoreCheck::to_json() const {
           {"limit", limit >= 0 ? Json(limit) : Json()}};
 }
 
-CoreCheck& CaseResult::core_check(const std::string& check, const std::string& count_name,
-                                  double limit) {
-  for (auto& c : core_checks)
-    if (c.name == check) return c;
-  core_checks.push_back({check, count_name, limit});
-  return core_checks.back();
-}
-
 Json CaseResult::to_json() const {
   Json j;
   j["core"] = core;

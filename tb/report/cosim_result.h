@@ -94,7 +94,13 @@ struct CaseResult {
   }
   Json to_json() const;
   // The check `name`, added (with its count name and limit) on first use.
-  CoreCheck& core_check(const std::string& name, const std::string& count_name, double limit);
+  // (Inline: the adapters use it, and the fuzzers link them without the reports.)
+  CoreCheck& core_check(const std::string& check, const std::string& count_name, double limit) {
+    for (auto& c : core_checks)
+      if (c.name == check) return c;
+    core_checks.push_back({check, count_name, limit});
+    return core_checks.back();
+  }
 };
 
 // Keeps the first few of a list of findings and counts all of them.
