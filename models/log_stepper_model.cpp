@@ -132,8 +132,8 @@ std::string log_fixed_check(const LogFixedCommand& c, const LogFixedFormat& f, i
   const double reach = static_cast<double>(c.x_end + 3 * c.dl) / one;
   const double q = 1 + b * reach;
   if (q * q + ab * ab >= std::ldexp(1.0, f.int_w - 1))
-    return "q^2 + (ab)^2 = " + std::to_string(q * q + ab * ab) + " at X = " +
-           std::to_string(reach) + " leaves the " + std::to_string(f.int_w) +
+    return "q^2 + (ab)^2 = " + std::to_string(q * q + ab * ab) +
+           " at X = " + std::to_string(reach) + " leaves the " + std::to_string(f.int_w) +
            "-bit integer part (shorten x_end or narrow the cone)";
   const int64_t seg_max = (int64_t{1} << (seg_w - 1)) - 1;
   const int64_t pos_lim = (int64_t{1} << (pos_w - 1)) - 1;

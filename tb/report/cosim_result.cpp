@@ -15,7 +15,10 @@ Json to_json(const AbortRecord& a) {
 }
 
 Json CoreCheck::to_json() const {
-  return {{"name", name}, {"count_name", count_name}, {"count", count}, {"max", max},
+  return {{"name", name},
+          {"count_name", count_name},
+          {"count", count},
+          {"max", max},
           {"limit", limit >= 0 ? Json(limit) : Json()}};
 }
 

@@ -80,8 +80,9 @@ struct CaseResult {
   uint64_t scoreboard_error_count = 0;
   std::vector<std::string> scoreboard_errors;  // the first few
   std::vector<AbortRecord> aborts;
-  std::vector<CoreCheck> core_checks;         // the core's own figures (Reference::check)
-  std::vector<models::LatticePoint> checkpoints;  // where they were checked (BenchOptions::record_path)
+  std::vector<CoreCheck> core_checks;  // the core's own figures (Reference::check)
+  std::vector<models::LatticePoint>
+      checkpoints;                            // where they were checked (BenchOptions::record_path)
   std::vector<models::LatticePoint> visited;  // start and every move (BenchOptions::record_path)
   std::vector<uint64_t> done_cycles;  // case cycle of each done_o (BenchOptions::record_path)
   bool timed_out = false;

@@ -64,7 +64,8 @@ PaperReproduction reproduce_log() {
   int64_t hw_worst = 0;
   for (size_t k = 0; k < pts.size() && k + 1 < r02.points.size(); ++k) {
     const auto want = models::log_lattice(r02.points[k + 1], LogCurveParams{}, scale);
-    for (size_t i = 0; i < 4; ++i) hw_worst = std::max<int64_t>(hw_worst, std::llabs(pts[k][i] - want[i]));
+    for (size_t i = 0; i < 4; ++i)
+      hw_worst = std::max<int64_t>(hw_worst, std::llabs(pts[k][i] - want[i]));
   }
   auto hw_x = [&](size_t point) { return static_cast<double>(pts.at(point - 1)[0]) / kSteps; };
   auto hw_a = [&](size_t point) {

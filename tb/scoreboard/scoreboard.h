@@ -42,9 +42,10 @@ namespace hwinterp::tb {
 template <class R, class = void>
 struct HasCoreChecks : std::false_type {};
 template <class R>
-struct HasCoreChecks<R, std::void_t<decltype(std::declval<R&>().check(
-                            std::declval<const models::LatticePoint&>(), std::declval<CaseResult&>(),
-                            std::declval<std::vector<std::string>&>()))>> : std::true_type {};
+struct HasCoreChecks<R,
+                     std::void_t<decltype(std::declval<R&>().check(
+                         std::declval<const models::LatticePoint&>(), std::declval<CaseResult&>(),
+                         std::declval<std::vector<std::string>&>()))>> : std::true_type {};
 
 template <class A>
 class Scoreboard {

@@ -103,7 +103,8 @@ TEST(LogStepperModel, RandomCurvesStayWithinOneStepOfTheDoubleModel) {
       ++n;
       ASSERT_LT(q.index, exact.points.size());
       const auto want = log_lattice(exact.points[q.index], p, s);
-      for (size_t i = 0; i < 4; ++i) worst = std::max<int64_t>(worst, std::llabs(q.pos[i] - want[i]));
+      for (size_t i = 0; i < 4; ++i)
+        worst = std::max<int64_t>(worst, std::llabs(q.pos[i] - want[i]));
     }
     EXPECT_EQ(n, exact.count()) << "curve " << k;
   }

@@ -242,9 +242,10 @@ bool Adapter::job_directive(JobLine<Adapter>& line) {
   if (line.words[0] != "curve") return false;
   const auto& w = line.words;
   if (w.size() < 7 || w.size() > 9)
-    throw UsageError(line.where +
-                     ": 'curve' takes D1 SPIRAL CONE RAKE DL XEND [STEPS_PER_MM [STEPS_PER_DEG]] (" +
-                     std::to_string(w.size() - 1) + " values given)");
+    throw UsageError(
+        line.where +
+        ": 'curve' takes D1 SPIRAL CONE RAKE DL XEND [STEPS_PER_MM [STEPS_PER_DEG]] (" +
+        std::to_string(w.size() - 1) + " values given)");
   models::LogCurveParams p;
   double* fields[] = {&p.d1_mm, &p.spiral_deg, &p.cone_deg, &p.rake_deg, &p.dl_mm, &p.x_end_mm};
   for (size_t i = 0; i < 6; ++i) *fields[i] = cli::parse_real(w[i + 1], line.where);
@@ -298,8 +299,9 @@ std::vector<Case<Adapter>> Adapter::regression_cases(const CoreLimits& l, uint64
 }
 
 void Adapter::declare_options(cli::Args& args) {
-  args.option("d1", "MM", "one curve: end diameter D1 of the cutter (the other curve options "
-                          "default to the paper's case)")
+  args.option("d1", "MM",
+              "one curve: end diameter D1 of the cutter (the other curve options "
+              "default to the paper's case)")
       .option("spiral", "DEG", "spiral angle S, in (0, 90)", "30")
       .option("cone", "DEG", "cone angle C, in (0, 90)", "5")
       .option("rake", "DEG", "rake r, in (0, 90)", "8")
@@ -307,8 +309,9 @@ void Adapter::declare_options(cli::Args& args) {
       .option("x-end", "MM", "X at which the run stops (after a whole cycle)", "30")
       .option("steps-per-mm", "N", "steps per mm of X, Y and Z", "1000")
       .option("steps-per-deg", "N", "steps per degree of A", "1000")
-      .flag("paper-log", "the curve of 001_46110e999325a38e.txt (D1 10, S 30, C 5, r 8, dl 0.2, "
-                         "X to 30 mm)");
+      .flag("paper-log",
+            "the curve of 001_46110e999325a38e.txt (D1 10, S 30, C 5, r 8, dl 0.2, "
+            "X to 30 mm)");
 }
 
 std::vector<Case<Adapter>> Adapter::cases_from_options(const cli::Args& args, const CoreLimits& l,

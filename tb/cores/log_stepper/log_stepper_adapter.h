@@ -139,8 +139,7 @@ struct Adapter {
     std::vector<std::vector<double>> ideal() const;
     // The coarse-point checks (header comment).
     void check(const models::LatticePoint& at, CaseResult& r, std::vector<std::string>& failures);
-    void finish(const models::LatticePoint& at, CaseResult& r,
-                std::vector<std::string>& failures);
+    void finish(const models::LatticePoint& at, CaseResult& r, std::vector<std::string>& failures);
 
    private:
     void check_point(size_t index, const models::LatticePoint& at, CaseResult& r,
