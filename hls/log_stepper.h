@@ -323,53 +323,33 @@ class LogStepper {
         }
         break;
       }
-      case log_uop::kSqrt: {
-        // Digit i = SQRT_CYC-1-c of n = s1 2^F: bits 2i+1..2i of n, i.e.
-        // bits 2i+1-F..2i-F of s1 (zero below bit 0).
-        const int i = SQRT_CYC - 1 - static_cast<int>(c);
-        const int lo = 2 * i - FRAC_W;
-        unsigned pair = 0;
-        if (lo + 1 >= 0 && lo + 1 < W && s1[lo + 1]) pair |= 2;
-        if (lo >= 0 && lo < W && s1[lo]) pair |= 1;
-        const rem_t rem_in = c == 0 ? rem_t(0) : rem_q_;
-        const rem_t root_in = c == 0 ? rem_t(0) : res_q_;
-        const rem_t rem2 = (rem_in << 2) | pair;
-        const rem_t trial = (root_in << 2) | 1;
-        rem_t root;
-        if (rem2 >= trial) {
-          rem_q_ = rem2 - trial;
-          root = (root_in << 1) | 1;
-        } else {
-          rem_q_ = rem2;
-          root = root_in << 1;
-        }
-        res_q_ = root;
-        if (c + 1 < SQRT_CYC) {
-          cnt_q_ = c + 1;
-        } else {
-          reg_q_[u.dst] = word_t(root.to_uint64());
-          next_op();
-        }
-        break;
-      }
+      case log_uop::kSqrt:
       case log_uop::kRecip: {
-        const rem_t rem_in = c == 0 ? rem_t(rem_t(1) << (FRAC_W - 1)) : rem_q_;
+        // One digit of a restoring recurrence (the RTL shares it too):
+        // sqrt: digit i = SQRT_CYC-1-c of n = s1 2^F, bits 2i+1..2i of n,
+        //   i.e. bits 2i+1-F..2i-F of s1 (zero below bit 0); trial 4 root + 1;
+        // recip: 2^2F / s1, the remainder starting at 2^(F-1); trial s1.
+        const bool sqrt = u.op == log_uop::kSqrt;
         const rem_t res_in = c == 0 ? rem_t(0) : res_q_;
-        const rem_t rem2 = rem_in << 1;
-        const rem_t d = rem_t(s1.to_uint64());
-        rem_t res;
-        if (rem2 >= d) {
-          rem_q_ = rem2 - d;
-          res = (res_in << 1) | 1;
+        rem_t rem2, trial;
+        if (sqrt) {
+          const int lo = 2 * (SQRT_CYC - 1 - static_cast<int>(c)) - FRAC_W;
+          unsigned pair = 0;
+          if (lo + 1 >= 0 && lo + 1 < W && s1[lo + 1]) pair |= 2;
+          if (lo >= 0 && lo < W && s1[lo]) pair |= 1;
+          rem2 = ((c == 0 ? rem_t(0) : rem_q_) << 2) | pair;
+          trial = (res_in << 2) | 1;
         } else {
-          rem_q_ = rem2;
-          res = res_in << 1;
+          rem2 = (c == 0 ? rem_t(rem_t(1) << (FRAC_W - 1)) : rem_q_) << 1;
+          trial = rem_t(s1.to_uint64());
         }
-        res_q_ = res;
-        if (c + 1 < RECIP_CYC) {
+        const bool bit = rem2 >= trial;
+        rem_q_ = bit ? rem_t(rem2 - trial) : rem2;
+        res_q_ = (res_in << 1) | rem_t(bit);
+        if (c + 1 < (sqrt ? SQRT_CYC : RECIP_CYC)) {
           cnt_q_ = c + 1;
         } else {
-          reg_q_[u.dst] = word_t(res.to_uint64());
+          reg_q_[u.dst] = word_t(res_q_.to_uint64());
           next_op();
         }
         break;
