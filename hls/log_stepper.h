@@ -32,37 +32,22 @@ enum Op : unsigned char {
   kPos,    // lattice position of axis dst = pos(s1, s2): MUL_CYC clocks
   kEmit,   // waits for the segment register, fills it (sh = 1: the even point)
 };
+// Registers: the command (B..K3), two per-curve constants, X and A, and
+// eight temporaries shared by values whose lives do not overlap (the
+// program's comments name the value each holds).
+// clang-format off
 enum Reg : unsigned char {
-  kOne,
-  kThree,
-  kB,
-  kAb,
-  kDl,
-  kXEnd,
-  kK0,
-  kK1,
-  kK2,
-  kK3,
-  kAb2,
-  kBdl,
-  kX,
-  kA,
-  kQ,
-  kU,
-  kDx,
-  kDa,
-  kS2,
-  kDp,
-  kE,
-  kD,
-  kN15,
-  kN14,
-  kR14,
-  kR15,
-  kT0,
-  kT1,
+  kOne, kThree, kB, kAb, kDl, kXEnd, kK0, kK1, kK2, kK3, kAb2, kBdl, kX, kA,
+  kQ,   // q, then D, then N15 / D
+  kU,   // u, then N15
+  kDx,  // dX10, then dX21
+  kDa,  // dA10, then dA21
+  kDp,  // d', then N14
+  kE,   // e = d' s2, then N14 / D
+  kT0, kT1,
   kRegs
 };
+// clang-format on
 struct Uop {
   Op op;
   unsigned char dst, s1, s2, sh;
@@ -70,49 +55,49 @@ struct Uop {
 // pc 0-1 run once per command; each odd+even cycle runs pc 2-42.
 inline constexpr int kCycleStart = 2;
 inline constexpr Uop kProgram[] = {
-    {kMul, kAb2, kAb, kAb, 0},   // 0  ab^2
-    {kMul, kBdl, kB, kDl, 0},    // 1  b dl
-    {kMul, kT0, kB, kX, 0},      // 2  b X0
-    {kAdd, kQ, kT0, kOne, 0},    // 3  q = 1 + b X0
-    {kMul, kT0, kQ, kQ, 0},      // 4  q^2
-    {kAdd, kT0, kT0, kAb2, 0},   // 5  q^2 + ab^2
-    {kSqrt, kT0, kT0, 0, 0},     // 6  root
-    {kRecip, kU, kT0, 0, 0},     // 7  u = 1 / root
-    {kMul, kT0, kQ, kU, 0},      // 8  q u
-    {kMul, kDx, kDl, kT0, 0},    // 9  dX10
-    {kMul, kT1, kAb, kU, 0},     // 10 ab u
-    {kMul, kDa, kDl, kT1, 0},    // 11 dA10
-    {kMul, kS2, kT1, kT1, 0},    // 12 s2 = sin^2 theta
-    {kMul, kDp, kBdl, kU, 0},    // 13 d' = dA10 / a
-    {kMul, kE, kDp, kS2, 0},     // 14 e = d' s2
-    {kRsb, kT0, kDp, 0, 2},      // 15 3 - 4d'
-    {kMul, kT1, kE, kT0, 0},     // 16 e (3 - 4d')
-    {kRsb, kD, kT1, 0, 1},       // 17 D
-    {kMul, kT0, kDp, kT0, 0},    // 18 d' (3 - 4d')
-    {kRsb, kN15, kT0, 0, 1},     // 19 N15
-    {kRsb, kT0, kDp, 0, 3},      // 20 3 - 8d'
-    {kMul, kT1, kDp, kE, 0},     // 21 d' e
-    {kMul, kT0, kT1, kT0, 0},    // 22 d' e (3 - 8d')
-    {kRsb, kN14, kT0, 0, 1},     // 23 N14
-    {kRecip, kT0, kD, 0, 0},     // 24 1 / D
-    {kMul, kR14, kN14, kT0, 0},  // 25 N14 / D
-    {kMul, kR15, kN15, kT0, 0},  // 26 N15 / D
-    {kAdd, kX, kX, kDx, 0},      // 27 X1
-    {kAdd, kA, kA, kDa, 0},      // 28 A1
-    {kPos, 0, kX, kK0, 0},       // 29 X steps
-    {kPos, 1, kX, kK1, 0},       // 30 Y steps
-    {kPos, 2, kX, kK2, 0},       // 31 Z steps
-    {kPos, 3, kA, kK3, 0},       // 32 A steps
-    {kEmit, 0, 0, 0, 0},         // 33 odd point
-    {kMul, kDx, kR14, kDx, 0},   // 34 dX21
-    {kMul, kDa, kR15, kDa, 0},   // 35 dA21
-    {kAdd, kX, kX, kDx, 0},      // 36 X2
-    {kAdd, kA, kA, kDa, 0},      // 37 A2
-    {kPos, 0, kX, kK0, 0},       // 38
-    {kPos, 1, kX, kK1, 0},       // 39
-    {kPos, 2, kX, kK2, 0},       // 40
-    {kPos, 3, kA, kK3, 0},       // 41
-    {kEmit, 0, 0, 0, 1},         // 42 even point; X2 >= x_end ends the curve
+    {kMul, kAb2, kAb, kAb, 0},  // 0  ab^2
+    {kMul, kBdl, kB, kDl, 0},   // 1  b dl
+    {kMul, kT0, kB, kX, 0},     // 2  b X0
+    {kAdd, kQ, kT0, kOne, 0},   // 3  q = 1 + b X0
+    {kMul, kT0, kQ, kQ, 0},     // 4  q^2
+    {kAdd, kT0, kT0, kAb2, 0},  // 5  q^2 + ab^2
+    {kSqrt, kT0, kT0, 0, 0},    // 6  root
+    {kRecip, kU, kT0, 0, 0},    // 7  u = 1 / root
+    {kMul, kT0, kQ, kU, 0},     // 8  q u
+    {kMul, kDx, kDl, kT0, 0},   // 9  dX10
+    {kMul, kT1, kAb, kU, 0},    // 10 ab u
+    {kMul, kDa, kDl, kT1, 0},   // 11 dA10
+    {kMul, kT0, kT1, kT1, 0},   // 12 s2 = sin^2 theta
+    {kMul, kDp, kBdl, kU, 0},   // 13 d' = dA10 / a
+    {kMul, kE, kDp, kT0, 0},    // 14 e = d' s2
+    {kRsb, kT0, kDp, 0, 2},     // 15 3 - 4d'
+    {kMul, kT1, kE, kT0, 0},    // 16 e (3 - 4d')
+    {kRsb, kQ, kT1, 0, 1},      // 17 D
+    {kMul, kT0, kDp, kT0, 0},   // 18 d' (3 - 4d')
+    {kRsb, kU, kT0, 0, 1},      // 19 N15
+    {kRsb, kT0, kDp, 0, 3},     // 20 3 - 8d'
+    {kMul, kT1, kDp, kE, 0},    // 21 d' e
+    {kMul, kT0, kT1, kT0, 0},   // 22 d' e (3 - 8d')
+    {kRsb, kDp, kT0, 0, 1},     // 23 N14
+    {kRecip, kT0, kQ, 0, 0},    // 24 1 / D
+    {kMul, kE, kDp, kT0, 0},    // 25 N14 / D
+    {kMul, kQ, kU, kT0, 0},     // 26 N15 / D
+    {kAdd, kX, kX, kDx, 0},     // 27 X1
+    {kAdd, kA, kA, kDa, 0},     // 28 A1
+    {kPos, 0, kX, kK0, 0},      // 29 X steps
+    {kPos, 1, kX, kK1, 0},      // 30 Y steps
+    {kPos, 2, kX, kK2, 0},      // 31 Z steps
+    {kPos, 3, kA, kK3, 0},      // 32 A steps
+    {kEmit, 0, 0, 0, 0},        // 33 odd point
+    {kMul, kDx, kE, kDx, 0},    // 34 dX21 = (N14 / D) dX10
+    {kMul, kDa, kQ, kDa, 0},    // 35 dA21 = (N15 / D) dA10
+    {kAdd, kX, kX, kDx, 0},     // 36 X2
+    {kAdd, kA, kA, kDa, 0},     // 37 A2
+    {kPos, 0, kX, kK0, 0},      // 38
+    {kPos, 1, kX, kK1, 0},      // 39
+    {kPos, 2, kX, kK2, 0},      // 40
+    {kPos, 3, kA, kK3, 0},      // 41
+    {kEmit, 0, 0, 0, 1},        // 42 even point; X2 >= x_end ends the curve
 };
 inline constexpr int kProgramLength = sizeof(kProgram) / sizeof(kProgram[0]);
 }  // namespace log_uop

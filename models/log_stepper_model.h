@@ -42,8 +42,8 @@
 namespace hwinterp::models {
 
 struct LogFixedFormat {
-  int int_w = 12;   // integer bits
-  int frac_w = 32;  // fraction bits F
+  int int_w = 10;   // integer bits
+  int frac_w = 30;  // fraction bits F
   int width() const { return int_w + frac_w; }
   uint64_t one() const { return uint64_t{1} << frac_w; }
   uint64_t max_word() const { return (uint64_t{1} << width()) - 1; }

@@ -59,9 +59,9 @@
 // a curve's last segment; step_o, dir_o and pos_o are the fine stage's.
 module log_stepper #(
   parameter int AXES   = 4,   // X, Y, Z, A (fixed)
-  parameter int INT_W  = 12,  // integer bits of the coarse engine's words
-  parameter int FRAC_W = 32,  // fraction bits of the coarse engine's words
-  parameter int MUL_K  = 11,  // multiplier bits per clock
+  parameter int INT_W  = 10,  // integer bits of the coarse engine's words
+  parameter int FRAC_W = 30,  // fraction bits of the coarse engine's words
+  parameter int MUL_K  = 10,  // multiplier bits per clock
   parameter int SEG_W  = 16,  // width of the signed segment deltas (the fine stage's ACC_W)
   parameter int POS_W  = 32,  // position counter width
   parameter int TIM_W  = 16,  // step/dir timing settings width
@@ -98,7 +98,7 @@ module log_stepper #(
   localparam int RemW      = (SqrtCyc + 3 > W + 1) ? SqrtCyc + 3 : W + 1;
   localparam int ProdW     = 2 * W + 1;
   localparam int PosSh     = 2 * FRAC_W - 16;  // models::kLogPosShift = 16
-  localparam int NRegs     = 28;
+  localparam int NRegs     = 22;
   localparam int CycleStart = 2;
   localparam int RegK0     = 6;  // RK0, as an int for the load loop
 
@@ -108,9 +108,8 @@ module log_stepper #(
   localparam logic [4:0] ROne = 5'd0, RThree = 5'd1, RB = 5'd2, RAb = 5'd3, RDl = 5'd4,
                          RXEnd = 5'd5, RK0 = 5'd6, RK1 = 5'd7, RK2 = 5'd8, RK3 = 5'd9,
                          RAb2 = 5'd10, RBdl = 5'd11, RX = 5'd12, RA = 5'd13, RQ = 5'd14,
-                         RU = 5'd15, RDx = 5'd16, RDa = 5'd17, RS2 = 5'd18, RDp = 5'd19,
-                         RE = 5'd20, RD = 5'd21, RN15 = 5'd22, RN14 = 5'd23, RR14 = 5'd24,
-                         RR15 = 5'd25, RT0 = 5'd26, RT1 = 5'd27;
+                         RU = 5'd15, RDx = 5'd16, RDa = 5'd17, RDp = 5'd18, RE = 5'd19,
+                         RT0 = 5'd20, RT1 = 5'd21;
 
   // ---------------------------------------------------------------------------
   // Program ROM.
@@ -122,49 +121,49 @@ module log_stepper #(
   always_comb begin
     op = OpMul; dst = RT0; src1 = ROne; src2 = ROne; sh = 2'd0;
     unique case (pc_q)
-      6'd0:  begin op = OpMul;   dst = RAb2; src1 = RAb;  src2 = RAb;  end
-      6'd1:  begin op = OpMul;   dst = RBdl; src1 = RB;   src2 = RDl;  end
-      6'd2:  begin op = OpMul;   dst = RT0;  src1 = RB;   src2 = RX;   end
-      6'd3:  begin op = OpAdd;   dst = RQ;   src1 = RT0;  src2 = ROne; end
-      6'd4:  begin op = OpMul;   dst = RT0;  src1 = RQ;   src2 = RQ;   end
-      6'd5:  begin op = OpAdd;   dst = RT0;  src1 = RT0;  src2 = RAb2; end
-      6'd6:  begin op = OpSqrt;  dst = RT0;  src1 = RT0;  end
-      6'd7:  begin op = OpRecip; dst = RU;   src1 = RT0;  end
-      6'd8:  begin op = OpMul;   dst = RT0;  src1 = RQ;   src2 = RU;   end
-      6'd9:  begin op = OpMul;   dst = RDx;  src1 = RDl;  src2 = RT0;  end
-      6'd10: begin op = OpMul;   dst = RT1;  src1 = RAb;  src2 = RU;   end
-      6'd11: begin op = OpMul;   dst = RDa;  src1 = RDl;  src2 = RT1;  end
-      6'd12: begin op = OpMul;   dst = RS2;  src1 = RT1;  src2 = RT1;  end
-      6'd13: begin op = OpMul;   dst = RDp;  src1 = RBdl; src2 = RU;   end
-      6'd14: begin op = OpMul;   dst = RE;   src1 = RDp;  src2 = RS2;  end
-      6'd15: begin op = OpRsb;   dst = RT0;  src1 = RDp;  sh = 2'd2;   end
-      6'd16: begin op = OpMul;   dst = RT1;  src1 = RE;   src2 = RT0;  end
-      6'd17: begin op = OpRsb;   dst = RD;   src1 = RT1;  sh = 2'd1;   end
-      6'd18: begin op = OpMul;   dst = RT0;  src1 = RDp;  src2 = RT0;  end
-      6'd19: begin op = OpRsb;   dst = RN15; src1 = RT0;  sh = 2'd1;   end
-      6'd20: begin op = OpRsb;   dst = RT0;  src1 = RDp;  sh = 2'd3;   end
-      6'd21: begin op = OpMul;   dst = RT1;  src1 = RDp;  src2 = RE;   end
-      6'd22: begin op = OpMul;   dst = RT0;  src1 = RT1;  src2 = RT0;  end
-      6'd23: begin op = OpRsb;   dst = RN14; src1 = RT0;  sh = 2'd1;   end
-      6'd24: begin op = OpRecip; dst = RT0;  src1 = RD;   end
-      6'd25: begin op = OpMul;   dst = RR14; src1 = RN14; src2 = RT0;  end
-      6'd26: begin op = OpMul;   dst = RR15; src1 = RN15; src2 = RT0;  end
-      6'd27: begin op = OpAdd;   dst = RX;   src1 = RX;   src2 = RDx;  end
-      6'd28: begin op = OpAdd;   dst = RA;   src1 = RA;   src2 = RDa;  end
-      6'd29: begin op = OpPos;   dst = 5'd0; src1 = RX;   src2 = RK0;  end
-      6'd30: begin op = OpPos;   dst = 5'd1; src1 = RX;   src2 = RK1;  end
-      6'd31: begin op = OpPos;   dst = 5'd2; src1 = RX;   src2 = RK2;  end
-      6'd32: begin op = OpPos;   dst = 5'd3; src1 = RA;   src2 = RK3;  end
-      6'd33: begin op = OpEmit;  end
-      6'd34: begin op = OpMul;   dst = RDx;  src1 = RR14; src2 = RDx;  end
-      6'd35: begin op = OpMul;   dst = RDa;  src1 = RR15; src2 = RDa;  end
-      6'd36: begin op = OpAdd;   dst = RX;   src1 = RX;   src2 = RDx;  end
-      6'd37: begin op = OpAdd;   dst = RA;   src1 = RA;   src2 = RDa;  end
-      6'd38: begin op = OpPos;   dst = 5'd0; src1 = RX;   src2 = RK0;  end
-      6'd39: begin op = OpPos;   dst = 5'd1; src1 = RX;   src2 = RK1;  end
-      6'd40: begin op = OpPos;   dst = 5'd2; src1 = RX;   src2 = RK2;  end
-      6'd41: begin op = OpPos;   dst = 5'd3; src1 = RA;   src2 = RK3;  end
-      6'd42: begin op = OpEmit;  sh = 2'd1; end
+      6'd0: begin op = OpMul; dst = RAb2; src1 = RAb; src2 = RAb; end  // ab^2
+      6'd1: begin op = OpMul; dst = RBdl; src1 = RB; src2 = RDl; end  // b dl
+      6'd2: begin op = OpMul; dst = RT0; src1 = RB; src2 = RX; end  // b X0
+      6'd3: begin op = OpAdd; dst = RQ; src1 = RT0; src2 = ROne; end  // q = 1 + b X0
+      6'd4: begin op = OpMul; dst = RT0; src1 = RQ; src2 = RQ; end  // q^2
+      6'd5: begin op = OpAdd; dst = RT0; src1 = RT0; src2 = RAb2; end  // q^2 + ab^2
+      6'd6: begin op = OpSqrt; dst = RT0; src1 = RT0; end  // root
+      6'd7: begin op = OpRecip; dst = RU; src1 = RT0; end  // u = 1 / root
+      6'd8: begin op = OpMul; dst = RT0; src1 = RQ; src2 = RU; end  // q u
+      6'd9: begin op = OpMul; dst = RDx; src1 = RDl; src2 = RT0; end  // dX10
+      6'd10: begin op = OpMul; dst = RT1; src1 = RAb; src2 = RU; end  // ab u
+      6'd11: begin op = OpMul; dst = RDa; src1 = RDl; src2 = RT1; end  // dA10
+      6'd12: begin op = OpMul; dst = RT0; src1 = RT1; src2 = RT1; end  // s2 = sin^2 theta
+      6'd13: begin op = OpMul; dst = RDp; src1 = RBdl; src2 = RU; end  // d' = dA10 / a
+      6'd14: begin op = OpMul; dst = RE; src1 = RDp; src2 = RT0; end  // e = d' s2
+      6'd15: begin op = OpRsb; dst = RT0; src1 = RDp; sh = 2'd2; end  // 3 - 4d'
+      6'd16: begin op = OpMul; dst = RT1; src1 = RE; src2 = RT0; end  // e (3 - 4d')
+      6'd17: begin op = OpRsb; dst = RQ; src1 = RT1; sh = 2'd1; end  // D
+      6'd18: begin op = OpMul; dst = RT0; src1 = RDp; src2 = RT0; end  // d' (3 - 4d')
+      6'd19: begin op = OpRsb; dst = RU; src1 = RT0; sh = 2'd1; end  // N15
+      6'd20: begin op = OpRsb; dst = RT0; src1 = RDp; sh = 2'd3; end  // 3 - 8d'
+      6'd21: begin op = OpMul; dst = RT1; src1 = RDp; src2 = RE; end  // d' e
+      6'd22: begin op = OpMul; dst = RT0; src1 = RT1; src2 = RT0; end  // d' e (3 - 8d')
+      6'd23: begin op = OpRsb; dst = RDp; src1 = RT0; sh = 2'd1; end  // N14
+      6'd24: begin op = OpRecip; dst = RT0; src1 = RQ; end  // 1 / D
+      6'd25: begin op = OpMul; dst = RE; src1 = RDp; src2 = RT0; end  // N14 / D
+      6'd26: begin op = OpMul; dst = RQ; src1 = RU; src2 = RT0; end  // N15 / D
+      6'd27: begin op = OpAdd; dst = RX; src1 = RX; src2 = RDx; end  // X1
+      6'd28: begin op = OpAdd; dst = RA; src1 = RA; src2 = RDa; end  // A1
+      6'd29: begin op = OpPos; dst = 5'd0; src1 = RX; src2 = RK0; end  // X steps
+      6'd30: begin op = OpPos; dst = 5'd1; src1 = RX; src2 = RK1; end  // Y steps
+      6'd31: begin op = OpPos; dst = 5'd2; src1 = RX; src2 = RK2; end  // Z steps
+      6'd32: begin op = OpPos; dst = 5'd3; src1 = RA; src2 = RK3; end  // A steps
+      6'd33: begin op = OpEmit; end  // odd point
+      6'd34: begin op = OpMul; dst = RDx; src1 = RE; src2 = RDx; end  // dX21 = (N14 / D) dX10
+      6'd35: begin op = OpMul; dst = RDa; src1 = RQ; src2 = RDa; end  // dA21 = (N15 / D) dA10
+      6'd36: begin op = OpAdd; dst = RX; src1 = RX; src2 = RDx; end  // X2
+      6'd37: begin op = OpAdd; dst = RA; src1 = RA; src2 = RDa; end  // A2
+      6'd38: begin op = OpPos; dst = 5'd0; src1 = RX; src2 = RK0; end
+      6'd39: begin op = OpPos; dst = 5'd1; src1 = RX; src2 = RK1; end
+      6'd40: begin op = OpPos; dst = 5'd2; src1 = RX; src2 = RK2; end
+      6'd41: begin op = OpPos; dst = 5'd3; src1 = RA; src2 = RK3; end
+      6'd42: begin op = OpEmit; sh = 2'd1; end  // even point; X2 >= x_end ends the curve
       default: ;
     endcase
   end
@@ -201,6 +200,7 @@ module log_stepper #(
   logic [6:0]              cnt_q, cnt_d;
   logic [ProdW-1:0]        acc_q, acc_d, acc_sum, pp, pos_round;
   logic [MUL_K-1:0]        digit;
+  logic [W+MUL_K-1:0]      prod;   // s1 times one digit
   logic [RemW-1:0]         rem_q, rem_d, res_q, res_d;
   // The remainder and the partial result never reach their top bit before
   // the shift (they stay below the divisor / 2 root + 1): it is not read.
@@ -209,8 +209,7 @@ module log_stepper #(
   /* verilator lint_on UNUSEDSIGNAL */
   logic [RemW-1:0]         rem2, trial;
   logic [1:0]              pair;
-  integer                  lo;     // bit of s1 at the radicand digit's low bit
-  logic signed [31:0]      cnt_s;  // cnt_q as a signed number
+  logic [2*SqrtCyc-1:0]    radicand;  // s1 2^FRAC_W, the square root's digits
   logic                    cnt_last;
   logic [4*POS_W-1:0]      lnew_q, lnew_d, lprev_q, lprev_d;
   // Segment register and the tags of the segments in the fine stage.
@@ -224,9 +223,21 @@ module log_stepper #(
   // Fine stage outputs.
   logic                    fine_ready, fine_busy, fine_done;
 
-  assign cnt_s     = {25'd0, cnt_q};
-  assign digit     = MUL_K'(s2 >> (MUL_K * cnt_q));
-  assign pp        = (ProdW'(s1) * ProdW'(digit)) << (MUL_K * cnt_q);
+  assign radicand  = (2*SqrtCyc)'(s1) << FRAC_W;
+  // Multiplier: digit cnt of s2 times s1, placed at bit MUL_K cnt (AND-OR
+  // selects over the MulCyc places: a shift by MUL_K * cnt_q made Yosys build
+  // barrel shifters for every value of the 7-bit counter).
+  always_comb begin
+    digit = '0;
+    pp    = '0;
+    for (int j = 0; j < MulCyc; j++) begin
+      digit = digit | ({MUL_K{cnt_q == 7'(j)}} & MUL_K'(s2 >> (MUL_K * j)));
+    end
+    for (int j = 0; j < MulCyc; j++) begin
+      pp = pp | ({ProdW{cnt_q == 7'(j)}} & (ProdW'(prod) << (MUL_K * j)));
+    end
+  end
+  assign prod      = s1 * digit;
   assign acc_sum   = (cnt_q == '0 ? '0 : acc_q) + pp;
   assign pos_round = acc_sum + (ProdW'(1) << (PosSh - 1));
   assign emit_last = sh[0] && (rd(reg_q, RX) >= rd(reg_q, RXEnd));
@@ -234,10 +245,9 @@ module log_stepper #(
 
   always_comb begin
     // Digit i = SqrtCyc-1-cnt of n = s1 2^FRAC_W: bits 2i+1..2i of n.
-    lo = 2 * (SqrtCyc - 1 - cnt_s) - FRAC_W;
     pair = 2'b00;
-    if (lo + 1 >= 0 && lo + 1 < W) pair[1] = s1[lo + 1];
-    if (lo >= 0 && lo < W) pair[0] = s1[lo];
+    for (int i = 0; i < SqrtCyc; i++)
+      pair = pair | ({2{cnt_q == 7'(SqrtCyc - 1 - i)}} & radicand[2*i +: 2]);
     rem_in = '0;
     res_in = (cnt_q == '0) ? '0 : res_q;
     rem2   = '0;
