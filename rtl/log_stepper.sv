@@ -112,67 +112,83 @@ module log_stepper #(
                          RT0 = 5'd20, RT1 = 5'd21;
 
   // ---------------------------------------------------------------------------
-  // Program ROM.
-  logic [5:0] pc_q, pc_d;
-  logic [2:0] op;
-  logic [4:0] dst, src1, src2;
-  logic [1:0] sh;
+  // Program ROM (`rom`), read one clock ahead: dec_q holds the entry of
+  // pc_q, registered from the entry of pc_d, so no clock's path starts with
+  // the decode. (Pipeline registers only: the pins see no difference.)
+  logic [5:0]  pc_q, pc_d;
+  logic [19:0] dec_d;  // rom(pc_d): {op, dst, src1, src2, sh}
+  logic [9:0]  dec_q;  // {op, dst, sh} of pc_q (the sources go to the operand registers)
+  logic [2:0]  op;
+  logic [4:0]  dst;
+  logic [1:0]  sh;
+  logic [4:0]  src1_d, src2_d;
 
-  always_comb begin
-    op = OpMul; dst = RT0; src1 = ROne; src2 = ROne; sh = 2'd0;
-    unique case (pc_q)
-      6'd0: begin op = OpMul; dst = RAb2; src1 = RAb; src2 = RAb; end  // ab^2
-      6'd1: begin op = OpMul; dst = RBdl; src1 = RB; src2 = RDl; end  // b dl
-      6'd2: begin op = OpMul; dst = RT0; src1 = RB; src2 = RX; end  // b X0
-      6'd3: begin op = OpAdd; dst = RQ; src1 = RT0; src2 = ROne; end  // q = 1 + b X0
-      6'd4: begin op = OpMul; dst = RT0; src1 = RQ; src2 = RQ; end  // q^2
-      6'd5: begin op = OpAdd; dst = RT0; src1 = RT0; src2 = RAb2; end  // q^2 + ab^2
-      6'd6: begin op = OpSqrt; dst = RT0; src1 = RT0; end  // root
-      6'd7: begin op = OpRecip; dst = RU; src1 = RT0; end  // u = 1 / root
-      6'd8: begin op = OpMul; dst = RT0; src1 = RQ; src2 = RU; end  // q u
-      6'd9: begin op = OpMul; dst = RDx; src1 = RDl; src2 = RT0; end  // dX10
-      6'd10: begin op = OpMul; dst = RT1; src1 = RAb; src2 = RU; end  // ab u
-      6'd11: begin op = OpMul; dst = RDa; src1 = RDl; src2 = RT1; end  // dA10
-      6'd12: begin op = OpMul; dst = RT0; src1 = RT1; src2 = RT1; end  // s2 = sin^2 theta
-      6'd13: begin op = OpMul; dst = RDp; src1 = RBdl; src2 = RU; end  // d' = dA10 / a
-      6'd14: begin op = OpMul; dst = RE; src1 = RDp; src2 = RT0; end  // e = d' s2
-      6'd15: begin op = OpRsb; dst = RT0; src1 = RDp; sh = 2'd2; end  // 3 - 4d'
-      6'd16: begin op = OpMul; dst = RT1; src1 = RE; src2 = RT0; end  // e (3 - 4d')
-      6'd17: begin op = OpRsb; dst = RQ; src1 = RT1; sh = 2'd1; end  // D
-      6'd18: begin op = OpMul; dst = RT0; src1 = RDp; src2 = RT0; end  // d' (3 - 4d')
-      6'd19: begin op = OpRsb; dst = RU; src1 = RT0; sh = 2'd1; end  // N15
-      6'd20: begin op = OpRsb; dst = RT0; src1 = RDp; sh = 2'd3; end  // 3 - 8d'
-      6'd21: begin op = OpMul; dst = RT1; src1 = RDp; src2 = RE; end  // d' e
-      6'd22: begin op = OpMul; dst = RT0; src1 = RT1; src2 = RT0; end  // d' e (3 - 8d')
-      6'd23: begin op = OpRsb; dst = RDp; src1 = RT0; sh = 2'd1; end  // N14
-      6'd24: begin op = OpRecip; dst = RT0; src1 = RQ; end  // 1 / D
-      6'd25: begin op = OpMul; dst = RE; src1 = RDp; src2 = RT0; end  // N14 / D
-      6'd26: begin op = OpMul; dst = RQ; src1 = RU; src2 = RT0; end  // N15 / D
-      6'd27: begin op = OpAdd; dst = RX; src1 = RX; src2 = RDx; end  // X1
-      6'd28: begin op = OpAdd; dst = RA; src1 = RA; src2 = RDa; end  // A1
-      6'd29: begin op = OpPos; dst = 5'd0; src1 = RX; src2 = RK0; end  // X steps
-      6'd30: begin op = OpPos; dst = 5'd1; src1 = RX; src2 = RK1; end  // Y steps
-      6'd31: begin op = OpPos; dst = 5'd2; src1 = RX; src2 = RK2; end  // Z steps
-      6'd32: begin op = OpPos; dst = 5'd3; src1 = RA; src2 = RK3; end  // A steps
-      6'd33: begin op = OpEmit; end  // odd point
-      6'd34: begin op = OpMul; dst = RDx; src1 = RE; src2 = RDx; end  // dX21 = (N14 / D) dX10
-      6'd35: begin op = OpMul; dst = RDa; src1 = RQ; src2 = RDa; end  // dA21 = (N15 / D) dA10
-      6'd36: begin op = OpAdd; dst = RX; src1 = RX; src2 = RDx; end  // X2
-      6'd37: begin op = OpAdd; dst = RA; src1 = RA; src2 = RDa; end  // A2
-      6'd38: begin op = OpPos; dst = 5'd0; src1 = RX; src2 = RK0; end
-      6'd39: begin op = OpPos; dst = 5'd1; src1 = RX; src2 = RK1; end
-      6'd40: begin op = OpPos; dst = 5'd2; src1 = RX; src2 = RK2; end
-      6'd41: begin op = OpPos; dst = 5'd3; src1 = RA; src2 = RK3; end
-      6'd42: begin op = OpEmit; sh = 2'd1; end  // even point; X2 >= x_end ends the curve
+  function automatic logic [19:0] rom(input logic [5:0] pc);
+    logic [2:0] f_op;
+    logic [4:0] f_dst, f_s1, f_s2;
+    logic [1:0] f_sh;
+    f_op = OpMul; f_dst = RT0; f_s1 = ROne; f_s2 = ROne; f_sh = 2'd0;
+    case (pc)
+      6'd0: begin f_op = OpMul; f_dst = RAb2; f_s1 = RAb; f_s2 = RAb; end  // ab^2
+      6'd1: begin f_op = OpMul; f_dst = RBdl; f_s1 = RB; f_s2 = RDl; end  // b dl
+      6'd2: begin f_op = OpMul; f_dst = RT0; f_s1 = RB; f_s2 = RX; end  // b X0
+      6'd3: begin f_op = OpAdd; f_dst = RQ; f_s1 = RT0; f_s2 = ROne; end  // q = 1 + b X0
+      6'd4: begin f_op = OpMul; f_dst = RT0; f_s1 = RQ; f_s2 = RQ; end  // q^2
+      6'd5: begin f_op = OpAdd; f_dst = RT0; f_s1 = RT0; f_s2 = RAb2; end  // q^2 + ab^2
+      6'd6: begin f_op = OpSqrt; f_dst = RT0; f_s1 = RT0; end  // root
+      6'd7: begin f_op = OpRecip; f_dst = RU; f_s1 = RT0; end  // u = 1 / root
+      6'd8: begin f_op = OpMul; f_dst = RT0; f_s1 = RQ; f_s2 = RU; end  // q u
+      6'd9: begin f_op = OpMul; f_dst = RDx; f_s1 = RDl; f_s2 = RT0; end  // dX10
+      6'd10: begin f_op = OpMul; f_dst = RT1; f_s1 = RAb; f_s2 = RU; end  // ab u
+      6'd11: begin f_op = OpMul; f_dst = RDa; f_s1 = RDl; f_s2 = RT1; end  // dA10
+      6'd12: begin f_op = OpMul; f_dst = RT0; f_s1 = RT1; f_s2 = RT1; end  // s2 = sin^2 theta
+      6'd13: begin f_op = OpMul; f_dst = RDp; f_s1 = RBdl; f_s2 = RU; end  // d' = dA10 / a
+      6'd14: begin f_op = OpMul; f_dst = RE; f_s1 = RDp; f_s2 = RT0; end  // e = d' s2
+      6'd15: begin f_op = OpRsb; f_dst = RT0; f_s1 = RDp; f_sh = 2'd2; end  // 3 - 4d'
+      6'd16: begin f_op = OpMul; f_dst = RT1; f_s1 = RE; f_s2 = RT0; end  // e (3 - 4d')
+      6'd17: begin f_op = OpRsb; f_dst = RQ; f_s1 = RT1; f_sh = 2'd1; end  // D
+      6'd18: begin f_op = OpMul; f_dst = RT0; f_s1 = RDp; f_s2 = RT0; end  // d' (3 - 4d')
+      6'd19: begin f_op = OpRsb; f_dst = RU; f_s1 = RT0; f_sh = 2'd1; end  // N15
+      6'd20: begin f_op = OpRsb; f_dst = RT0; f_s1 = RDp; f_sh = 2'd3; end  // 3 - 8d'
+      6'd21: begin f_op = OpMul; f_dst = RT1; f_s1 = RDp; f_s2 = RE; end  // d' e
+      6'd22: begin f_op = OpMul; f_dst = RT0; f_s1 = RT1; f_s2 = RT0; end  // d' e (3 - 8d')
+      6'd23: begin f_op = OpRsb; f_dst = RDp; f_s1 = RT0; f_sh = 2'd1; end  // N14
+      6'd24: begin f_op = OpRecip; f_dst = RT0; f_s1 = RQ; end  // 1 / D
+      6'd25: begin f_op = OpMul; f_dst = RE; f_s1 = RDp; f_s2 = RT0; end  // N14 / D
+      6'd26: begin f_op = OpMul; f_dst = RQ; f_s1 = RU; f_s2 = RT0; end  // N15 / D
+      6'd27: begin f_op = OpAdd; f_dst = RX; f_s1 = RX; f_s2 = RDx; end  // X1
+      6'd28: begin f_op = OpAdd; f_dst = RA; f_s1 = RA; f_s2 = RDa; end  // A1
+      6'd29: begin f_op = OpPos; f_dst = 5'd0; f_s1 = RX; f_s2 = RK0; end  // X steps
+      6'd30: begin f_op = OpPos; f_dst = 5'd1; f_s1 = RX; f_s2 = RK1; end  // Y steps
+      6'd31: begin f_op = OpPos; f_dst = 5'd2; f_s1 = RX; f_s2 = RK2; end  // Z steps
+      6'd32: begin f_op = OpPos; f_dst = 5'd3; f_s1 = RA; f_s2 = RK3; end  // A steps
+      6'd33: begin f_op = OpEmit; end  // odd point
+      6'd34: begin f_op = OpMul; f_dst = RDx; f_s1 = RE; f_s2 = RDx; end  // dX21 = (N14 / D) dX10
+      6'd35: begin f_op = OpMul; f_dst = RDa; f_s1 = RQ; f_s2 = RDa; end  // dA21 = (N15 / D) dA10
+      6'd36: begin f_op = OpAdd; f_dst = RX; f_s1 = RX; f_s2 = RDx; end  // X2
+      6'd37: begin f_op = OpAdd; f_dst = RA; f_s1 = RA; f_s2 = RDa; end  // A2
+      6'd38: begin f_op = OpPos; f_dst = 5'd0; f_s1 = RX; f_s2 = RK0; end
+      6'd39: begin f_op = OpPos; f_dst = 5'd1; f_s1 = RX; f_s2 = RK1; end
+      6'd40: begin f_op = OpPos; f_dst = 5'd2; f_s1 = RX; f_s2 = RK2; end
+      6'd41: begin f_op = OpPos; f_dst = 5'd3; f_s1 = RA; f_s2 = RK3; end
+      6'd42: begin f_op = OpEmit; f_sh = 2'd1; end  // even point; X2 >= x_end ends the curve
       default: ;
     endcase
-  end
+    rom = {f_op, f_dst, f_s1, f_s2, f_sh};
+  endfunction
+
+  assign op     = dec_q[9:7];
+  assign dst    = dec_q[6:2];
+  assign sh     = dec_q[1:0];
+  assign dec_d  = rom(pc_d);
+  assign src1_d = dec_d[11:7];
+  assign src2_d = dec_d[6:2];
 
   // ---------------------------------------------------------------------------
   // Register file: registers 2..NRegs-1, flat (W bits each); 0 and 1 read as
   // the constants 1.0 and 3.0.
   logic [NRegs*W-1:0] reg_q, reg_d;
-  logic [W-1:0]       s1, s2;
+  logic [W-1:0]       s1, s2;  // operand registers (s1_q, s2_q)
 
   // (Assigned to its name, not `return`: Yosys 0.23 has no return statement.)
   function automatic logic [W-1:0] rd(input logic [NRegs*W-1:0] regs, input logic [4:0] r);
@@ -181,18 +197,25 @@ module log_stepper #(
     else rd = regs[r*W +: W];
   endfunction
 
-  // The two read ports as AND-OR selects (a variable part-select
-  // `reg_q[src*W +: W]` made Yosys build a 1232-bit barrel shifter per port).
-  always_comb begin
-    s1 = '0;
-    s2 = '0;
-    for (int i = 2; i < NRegs; i++) begin
-      s1 = s1 | ({W{src1 == 5'(i)}} & reg_q[i*W +: W]);
-      s2 = s2 | ({W{src2 == 5'(i)}} & reg_q[i*W +: W]);
-    end
-    s1 = s1 | ({W{src1 == ROne}} & (W'(1) << FRAC_W)) | ({W{src1 == RThree}} & (W'(3) << FRAC_W));
-    s2 = s2 | ({W{src2 == ROne}} & (W'(1) << FRAC_W)) | ({W{src2 == RThree}} & (W'(3) << FRAC_W));
-  end
+  // The two operand registers: s1/s2 hold register src1/src2 of the entry
+  // at pc_q, read one clock ahead (from the register file as the command
+  // load leaves it, with the write port's value bypassed) by AND-OR selects.
+  // (A variable part-select `reg_q[src*W +: W]` made Yosys build a 1232-bit
+  // barrel shifter per port.)
+  logic [NRegs*W-1:0] reg_ld;  // reg_q with this clock's command load
+  logic [W-1:0]       s1_d, s2_d, rd1, rd2;
+
+  function automatic logic [W-1:0] rd_any(input logic [NRegs*W-1:0] regs, input logic [4:0] r);
+    logic [W-1:0] v;
+    v = ({W{r == ROne}} & (W'(1) << FRAC_W)) | ({W{r == RThree}} & (W'(3) << FRAC_W));
+    for (int i = 2; i < NRegs; i++) v = v | ({W{r == 5'(i)}} & regs[i*W +: W]);
+    rd_any = v;
+  endfunction
+
+  assign rd1  = rd_any(reg_ld, src1_d);
+  assign rd2  = rd_any(reg_ld, src2_d);
+  assign s1_d = (we && dst == src1_d) ? wdata : rd1;
+  assign s2_d = (we && dst == src2_d) ? wdata : rd2;
 
   // ---------------------------------------------------------------------------
   // Datapath units (their state: acc_q, rem_q, res_q).
@@ -299,10 +322,11 @@ module log_stepper #(
       assign load = '0;
     end
     assign loads = (i <= RegK0 + 3) || 5'(i) == RX || 5'(i) == RA;
-    assign reg_d[i*W +: W] = (cmd_take && loads) ? load :
-                             (we && dst == 5'(i)) ? wdata : reg_q[i*W +: W];
+    assign reg_ld[i*W +: W] = (cmd_take && loads) ? load : reg_q[i*W +: W];
+    assign reg_d[i*W +: W]  = (we && dst == 5'(i)) ? wdata : reg_ld[i*W +: W];
   end
-  assign reg_d[2*W-1:0] = '0;  // registers 0 and 1 are constants, never stored
+  assign reg_ld[2*W-1:0] = '0;  // registers 0 and 1 are constants, never stored
+  assign reg_d[2*W-1:0]  = '0;
 
   always_comb begin
     act_d       = act_q;
@@ -388,6 +412,9 @@ module log_stepper #(
       pc_q        <= '0;
       cnt_q       <= '0;
       reg_q       <= '0;
+      dec_q       <= '0;  // rom(0) is {OpMul, ...}: op 0, and nothing runs before a take
+      s1          <= '0;
+      s2          <= '0;
       acc_q       <= '0;
       rem_q       <= '0;
       res_q       <= '0;
@@ -403,6 +430,9 @@ module log_stepper #(
       pc_q        <= pc_d;
       cnt_q       <= cnt_d;
       reg_q       <= reg_d;
+      dec_q       <= {dec_d[19:12], dec_d[1:0]};
+      s1          <= s1_d;
+      s2          <= s2_d;
       acc_q       <= acc_d;
       rem_q       <= rem_d;
       res_q       <= res_d;
