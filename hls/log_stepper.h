@@ -24,12 +24,12 @@ namespace hwinterp::hls {
 // constants 1.0 and 3.0; 2..9 hold the command.
 namespace log_uop {
 enum Op : unsigned char {
-  kMul,    // dst = mul(s1, s2): MUL_CYC clocks, MUL_K bits of s2 a clock
+  kMul,    // dst = mul(s1, s2): MUL_CYC + 1 clocks, MUL_K bits of s2 a clock
   kSqrt,   // dst = sqrt(s1): SQRT_CYC clocks, one root bit a clock
   kRecip,  // dst = recip(s1): FRAC_W + 1 clocks, one quotient bit a clock
   kAdd,    // dst = s1 + s2: one clock
   kRsb,    // dst = 3.0 - (s1 << sh): one clock
-  kPos,    // lattice position of axis dst = pos(s1, s2): MUL_CYC clocks
+  kPos,    // lattice position of axis dst = pos(s1, s2): MUL_CYC + 1 clocks
   kEmit,   // waits for the segment register, fills it (sh = 1: the even point)
 };
 // Registers: the command (B..K3), two per-curve constants, X and A, and
@@ -119,7 +119,7 @@ class LogStepper {
   static_assert(FRAC_W >= 18 && INT_W >= 4 && W <= 62, "word format out of range");
   static_assert(MUL_K >= 1 && MUL_K <= W, "MUL_K out of range");
   static_assert(SEG_W >= 2 && SEG_W <= POS_W && POS_W <= 62, "SEG_W/POS_W out of range");
-  static constexpr int MUL_CYC = (W + MUL_K - 1) / MUL_K;  // clocks of a multiply
+  static constexpr int MUL_CYC = (W + MUL_K - 1) / MUL_K;  // digits of a multiply
   static constexpr int SQRT_CYC = (W + FRAC_W + 1) / 2;    // root bits of sqrt(x 2^F)
   static constexpr int RECIP_CYC = FRAC_W + 1;             // quotient bits of 2^2F / x
   static_assert(SQRT_CYC + 3 <= 64, "the square root's remainder needs SQRT_CYC + 3 bits");
@@ -171,6 +171,7 @@ class LogStepper {
     cnt_q_ = 0;
     for (int r = 0; r < log_uop::kRegs; ++r) reg_q_[r] = 0;
     acc_q_ = 0;
+    pp_q_ = 0;
     rem_q_ = 0;
     res_q_ = 0;
     for (int i = 0; i < 4; ++i) {
@@ -289,12 +290,16 @@ class LogStepper {
     switch (u.op) {
       case log_uop::kMul:
       case log_uop::kPos: {
-        // acc += s1 * (MUL_K bits of s2 from bit MUL_K c) << MUL_K c.
-        const sc_dt::sc_uint<MUL_K> digit = word_t(s2 >> (MUL_K * c)).range(MUL_K - 1, 0);
-        prod_t pp = prod_t(s1) * prod_t(digit);
-        pp <<= MUL_K * c;
-        const prod_t acc = (c == 0 ? prod_t(0) : acc_q_) + pp;
-        if (c + 1 < MUL_CYC) {
+        // Two stages: clock c < MUL_CYC forms pp = s1 digit_c << MUL_K c
+        // (digit c: MUL_K bits of s2 from bit MUL_K c) into a register, and
+        // the accumulator adds the previous clock's pp; clock MUL_CYC writes
+        // acc + pp. MUL_CYC + 1 clocks.
+        const prod_t acc = c == 0 ? prod_t(0) : prod_t(acc_q_ + pp_q_);
+        if (c < static_cast<unsigned>(MUL_CYC)) {
+          const sc_dt::sc_uint<MUL_K> digit = word_t(s2 >> (MUL_K * c)).range(MUL_K - 1, 0);
+          prod_t pp = prod_t(s1) * prod_t(digit);
+          pp <<= MUL_K * c;
+          pp_q_ = pp;
           acc_q_ = acc;
           cnt_q_ = c + 1;
         } else if (u.op == log_uop::kMul) {
@@ -376,7 +381,7 @@ class LogStepper {
   sc_dt::sc_uint<6> pc_q_;         // the program entry running
   sc_dt::sc_uint<CNT_W> cnt_q_;    // clock within a multi-clock operation
   word_t reg_q_[log_uop::kRegs];   // registers 2.. (0 and 1 are constants)
-  prod_t acc_q_;                   // the multiplier's partial product
+  prod_t acc_q_, pp_q_;            // the multiplier's accumulator and registered partial product
   rem_t rem_q_, res_q_;            // sqrt/recip remainder and root/quotient so far
   lpos_t lnew_q_[4], lprev_q_[4];  // lattice positions of this point and the last
   bool points_q_;                  // a point of this curve has been emitted (diagnostic)

@@ -19,10 +19,10 @@
 // the fine stage still runs the last segments of the previous one.
 //
 // Coarse engine: a micro-programmed datapath over a register file, one
-// operation at a time (the program is the `case (pc_q)` below, the same
-// table as hls/log_stepper.h): a multiplier that adds MUL_K bits of its
-// second operand a clock (MUL_CYC = ceil(W / MUL_K) clocks, the exact
-// product truncated to the format), a square root and a reciprocal by digit
+// operation at a time (the program is the `rom` function below, the same
+// table as hls/log_stepper.h): a two-stage multiplier that takes MUL_K bits
+// of its second operand a clock (MUL_CYC + 1 clocks, MUL_CYC = ceil(W /
+// MUL_K); the exact product truncated to the format), a square root and a reciprocal by digit
 // recurrence (one result bit a clock: SQRT_CYC = ceil((W + FRAC_W) / 2) and
 // FRAC_W + 1 clocks), adds and 3 - (x << s) in one clock.
 // models/log_stepper_model.h gives the arithmetic bit for bit, the
@@ -33,7 +33,7 @@
 // point's (all four axes move forward: every delta is >= 0).
 //
 // Clocks per odd+even cycle (two points), nothing waiting:
-//   25 MUL_CYC + SQRT_CYC + 2 (FRAC_W + 1) + 13.
+//   25 (MUL_CYC + 1) + SQRT_CYC + 2 (FRAC_W + 1) + 13.
 //
 // Pipeline: the coarse engine computes the next point while the fine stage
 // runs the previous ones. Between them sit the segment register and the fine
@@ -221,7 +221,7 @@ module log_stepper #(
   // Datapath units (their state: acc_q, rem_q, res_q).
   logic                    act_q, act_d;
   logic [6:0]              cnt_q, cnt_d;
-  logic [ProdW-1:0]        acc_q, acc_d, acc_sum, pp, pos_round;
+  logic [ProdW-1:0]        acc_q, acc_d, acc_sum, pp, pp_q, pos_round;
   logic [MUL_K-1:0]        digit;
   logic [W+MUL_K-1:0]      prod;   // s1 times one digit
   logic [RemW-1:0]         rem_q, rem_d, res_q, res_d;
@@ -261,7 +261,9 @@ module log_stepper #(
     end
   end
   assign prod      = s1 * digit;
-  assign acc_sum   = (cnt_q == '0 ? '0 : acc_q) + pp;
+  // Two stages: pp_q registers s1 digit_cnt << MUL_K cnt (cnt < MulCyc), the
+  // accumulator adds it a clock later; at cnt = MulCyc, acc_sum is the product.
+  assign acc_sum   = (cnt_q == '0) ? '0 : acc_q + pp_q;
   assign pos_round = acc_sum + (ProdW'(1) << (PosSh - 1));
   assign emit_last = sh[0] && (rd(reg_q, RX) >= rd(reg_q, RXEnd));
   assign cmd_take  = cmd_valid_i && !act_q && !abort_i;
@@ -351,7 +353,7 @@ module log_stepper #(
       end
     end
     unique case (op)
-      OpMul, OpPos:    cnt_last = (cnt_q == 7'(MulCyc - 1));
+      OpMul, OpPos:    cnt_last = (cnt_q == 7'(MulCyc));
       OpSqrt:          cnt_last = (cnt_q == 7'(SqrtCyc - 1));
       OpRecip:         cnt_last = (cnt_q == 7'(RecipCyc - 1));
       OpAdd, OpRsb:    cnt_last = 1'b1;
@@ -416,6 +418,7 @@ module log_stepper #(
       s1          <= '0;
       s2          <= '0;
       acc_q       <= '0;
+      pp_q        <= '0;
       rem_q       <= '0;
       res_q       <= '0;
       lnew_q      <= '0;
@@ -434,6 +437,7 @@ module log_stepper #(
       s1          <= s1_d;
       s2          <= s2_d;
       acc_q       <= acc_d;
+      pp_q        <= pp;
       rem_q       <= rem_d;
       res_q       <= res_d;
       lnew_q      <= lnew_d;

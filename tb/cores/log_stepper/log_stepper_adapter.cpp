@@ -59,12 +59,12 @@ Adapter::Command Adapter::make_command(const models::LogCurveParams& curve,
   // program, hls/log_stepper.h; DDA iterations per segment).
   const int w = f.width(), k = l.param("MUL_K");
   const uint64_t mul = static_cast<uint64_t>((w + k - 1) / k);
-  const uint64_t cycle_clocks = 25 * mul + static_cast<uint64_t>((w + f.frac_w + 1) / 2) +
+  const uint64_t cycle_clocks = 25 * (mul + 1) + static_cast<uint64_t>((w + f.frac_w + 1) / 2) +
                                 2 * static_cast<uint64_t>(f.frac_w + 1) + 13;
   models::LogFixedStream s(c.words, f);
   models::LogFixedPoint p;
   std::array<int64_t, 4> prev{};
-  c.work = 2 * mul + 4;
+  c.work = 2 * (mul + 1) + 4;
   while (s.next(p)) {
     ++c.points;
     std::vector<int64_t> d(4);
