@@ -232,7 +232,10 @@ module log_stepper #(
   /* verilator lint_on UNUSEDSIGNAL */
   logic [RemW-1:0]         rem2, trial;
   logic [1:0]              pair;
-  logic [2*SqrtCyc-1:0]    radicand;  // s1 2^FRAC_W, the square root's digits
+  // The square root's radicand s1 2^FRAC_W, top digit first: loaded from
+  // the next operand, shifted by a digit on each clock of a SQRT (a shift
+  // register instead of a select by the counter).
+  logic [2*SqrtCyc-1:0]    rad_q, rad_d;
   logic                    cnt_last;
   logic [4*POS_W-1:0]      lnew_q, lnew_d, lprev_q, lprev_d;
   // Segment register and the tags of the segments in the fine stage.
@@ -246,7 +249,8 @@ module log_stepper #(
   // Fine stage outputs.
   logic                    fine_ready, fine_busy, fine_done;
 
-  assign radicand  = (2*SqrtCyc)'(s1) << FRAC_W;
+  assign rad_d     = (act_q && op == OpSqrt && !cnt_last) ? rad_q << 2 :
+                     (2*SqrtCyc)'(s1_d) << FRAC_W;
   // Multiplier: digit cnt of s2 times s1, placed at bit MUL_K cnt (AND-OR
   // selects over the MulCyc places: a shift by MUL_K * cnt_q made Yosys build
   // barrel shifters for every value of the 7-bit counter).
@@ -265,14 +269,15 @@ module log_stepper #(
   // accumulator adds it a clock later; at cnt = MulCyc, acc_sum is the product.
   assign acc_sum   = (cnt_q == '0) ? '0 : acc_q + pp_q;
   assign pos_round = acc_sum + (ProdW'(1) << (PosSh - 1));
-  assign emit_last = sh[0] && (rd(reg_q, RX) >= rd(reg_q, RXEnd));
+  // X >= x_end, registered from the next register values (X changes only on
+  // its ADD): the stop rule's compare is off the EMIT -> pc path.
+  logic past_end_q;
+  assign emit_last = sh[0] && past_end_q;
   assign cmd_take  = cmd_valid_i && !act_q && !abort_i;
 
   always_comb begin
-    // Digit i = SqrtCyc-1-cnt of n = s1 2^FRAC_W: bits 2i+1..2i of n.
-    pair = 2'b00;
-    for (int i = 0; i < SqrtCyc; i++)
-      pair = pair | ({2{cnt_q == 7'(SqrtCyc - 1 - i)}} & radicand[2*i +: 2]);
+    // Digit SqrtCyc-1-cnt of n = s1 2^FRAC_W: the top two bits of rad_q.
+    pair = rad_q[2*SqrtCyc-1 -: 2];
     rem_in = '0;
     res_in = (cnt_q == '0) ? '0 : res_q;
     rem2   = '0;
@@ -414,6 +419,8 @@ module log_stepper #(
       pc_q        <= '0;
       cnt_q       <= '0;
       reg_q       <= '0;
+      past_end_q  <= 1'b0;
+      rad_q       <= '0;
       dec_q       <= '0;  // rom(0) is {OpMul, ...}: op 0, and nothing runs before a take
       s1          <= '0;
       s2          <= '0;
@@ -434,6 +441,8 @@ module log_stepper #(
       cnt_q       <= cnt_d;
       reg_q       <= reg_d;
       dec_q       <= {dec_d[19:12], dec_d[1:0]};
+      past_end_q  <= reg_d[RX*W +: W] >= reg_d[RXEnd*W +: W];
+      rad_q       <= rad_d;
       s1          <= s1_d;
       s2          <= s2_d;
       acc_q       <= acc_d;
