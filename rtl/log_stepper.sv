@@ -222,6 +222,7 @@ module log_stepper #(
   logic                    act_q, act_d;
   logic [6:0]              cnt_q, cnt_d;
   logic [ProdW-1:0]        acc_q, acc_d, acc_sum, pp, pp_q, pos_round;
+  logic                    first_q;  // cnt_q == 0, registered from cnt_d (a unit's first clock)
   logic [MUL_K-1:0]        digit;
   logic [W+MUL_K-1:0]      prod;   // s1 times one digit
   logic [RemW-1:0]         rem_q, rem_d, res_q, res_d;
@@ -267,7 +268,7 @@ module log_stepper #(
   assign prod      = s1 * digit;
   // Two stages: pp_q registers s1 digit_cnt << MUL_K cnt (cnt < MulCyc), the
   // accumulator adds it a clock later; at cnt = MulCyc, acc_sum is the product.
-  assign acc_sum   = (cnt_q == '0) ? '0 : acc_q + pp_q;
+  assign acc_sum   = first_q ? '0 : acc_q + pp_q;
   assign pos_round = acc_sum + (ProdW'(1) << (PosSh - 1));
   // X >= x_end, registered from the next register values (X changes only on
   // its ADD): the stop rule's compare is off the EMIT -> pc path.
@@ -279,15 +280,15 @@ module log_stepper #(
     // Digit SqrtCyc-1-cnt of n = s1 2^FRAC_W: the top two bits of rad_q.
     pair = rad_q[2*SqrtCyc-1 -: 2];
     rem_in = '0;
-    res_in = (cnt_q == '0) ? '0 : res_q;
+    res_in = first_q ? '0 : res_q;
     rem2   = '0;
     trial  = '0;
     if (op == OpSqrt) begin
-      rem_in = (cnt_q == '0) ? '0 : rem_q;
+      rem_in = first_q ? '0 : rem_q;
       rem2   = {rem_in[RemW-3:0], pair};
       trial  = {res_in[RemW-3:0], 2'b01};
     end else begin
-      rem_in = (cnt_q == '0) ? RemW'(1) << (FRAC_W - 1) : rem_q;
+      rem_in = first_q ? RemW'(1) << (FRAC_W - 1) : rem_q;
       rem2   = {rem_in[RemW-2:0], 1'b0};
       trial  = RemW'(s1);
     end
@@ -421,6 +422,7 @@ module log_stepper #(
       reg_q       <= '0;
       past_end_q  <= 1'b0;
       rad_q       <= '0;
+      first_q     <= 1'b1;
       dec_q       <= '0;  // rom(0) is {OpMul, ...}: op 0, and nothing runs before a take
       s1          <= '0;
       s2          <= '0;
@@ -443,6 +445,7 @@ module log_stepper #(
       dec_q       <= {dec_d[19:12], dec_d[1:0]};
       past_end_q  <= reg_d[RX*W +: W] >= reg_d[RXEnd*W +: W];
       rad_q       <= rad_d;
+      first_q     <= cnt_d == '0;
       s1          <= s1_d;
       s2          <= s2_d;
       acc_q       <= acc_d;
