@@ -223,7 +223,7 @@ module log_stepper #(
   logic [6:0]              cnt_q, cnt_d;
   logic [ProdW-1:0]        acc_q, acc_d, acc_sum, pp, pp_q, pos_round;
   logic                    first_q;  // cnt_q == 0, registered from cnt_d (a unit's first clock)
-  logic [MUL_K-1:0]        digit;
+  logic [MUL_K-1:0]        digit;  // digit cnt_q of s2 (registered)
   logic [W+MUL_K-1:0]      prod;   // s1 times one digit
   logic [RemW-1:0]         rem_q, rem_d, res_q, res_d;
   // The remainder and the partial result never reach their top bit before
@@ -252,17 +252,22 @@ module log_stepper #(
 
   assign rad_d     = (act_q && op == OpSqrt && !cnt_last) ? rad_q << 2 :
                      (2*SqrtCyc)'(s1_d) << FRAC_W;
-  // Multiplier: digit cnt of s2 times s1, placed at bit MUL_K cnt (AND-OR
-  // selects over the MulCyc places: a shift by MUL_K * cnt_q made Yosys build
-  // barrel shifters for every value of the 7-bit counter).
+  // Multiplier: digit cnt of s2 times s1, placed at bit MUL_K cnt. The digit
+  // and the place (one-hot) are registered one clock ahead, from the next
+  // operand and count, so the product starts at registers. (AND-OR selects:
+  // a shift by MUL_K * cnt_q made Yosys build barrel shifters for every value
+  // of the 7-bit counter.)
+  logic [MUL_K-1:0]  digit_d;
+  logic [MulCyc-1:0] place_q, place_d;
   always_comb begin
-    digit = '0;
-    pp    = '0;
+    digit_d = '0;
     for (int j = 0; j < MulCyc; j++) begin
-      digit = digit | ({MUL_K{cnt_q == 7'(j)}} & MUL_K'(s2 >> (MUL_K * j)));
+      place_d[j] = cnt_d == 7'(j);
+      digit_d    = digit_d | ({MUL_K{place_d[j]}} & MUL_K'(s2_d >> (MUL_K * j)));
     end
+    pp = '0;
     for (int j = 0; j < MulCyc; j++) begin
-      pp = pp | ({ProdW{cnt_q == 7'(j)}} & (ProdW'(prod) << (MUL_K * j)));
+      pp = pp | ({ProdW{place_q[j]}} & (ProdW'(prod) << (MUL_K * j)));
     end
   end
   assign prod      = s1 * digit;
@@ -423,6 +428,8 @@ module log_stepper #(
       past_end_q  <= 1'b0;
       rad_q       <= '0;
       first_q     <= 1'b1;
+      digit       <= '0;
+      place_q     <= '0;
       dec_q       <= '0;  // rom(0) is {OpMul, ...}: op 0, and nothing runs before a take
       s1          <= '0;
       s2          <= '0;
@@ -446,6 +453,8 @@ module log_stepper #(
       past_end_q  <= reg_d[RX*W +: W] >= reg_d[RXEnd*W +: W];
       rad_q       <= rad_d;
       first_q     <= cnt_d == '0;
+      digit       <= digit_d;
+      place_q     <= place_d;
       s1          <= s1_d;
       s2          <= s2_d;
       acc_q       <= acc_d;
