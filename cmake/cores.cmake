@@ -49,5 +49,5 @@ hwinterp_core_variant(CORE fixed_ratio NAME fixed_ratio_edge
 hwinterp_core_variant(CORE log_stepper NAME log_stepper_n4
   PARAMS AXES=4 INT_W=10 FRAC_W=30 MUL_K=10 SEG_W=16 POS_W=32 TIM_W=16 FEED_W=16 DEFAULTS ${timing})
 hwinterp_core_variant(CORE log_stepper NAME log_stepper_edge
-  PARAMS AXES=4 INT_W=11 FRAC_W=27 MUL_K=38 SEG_W=13 POS_W=27 TIM_W=5 FEED_W=7 DEFAULTS ${timing})
+  PARAMS AXES=4 INT_W=11 FRAC_W=27 MUL_K=7 SEG_W=13 POS_W=27 TIM_W=5 FEED_W=7 DEFAULTS ${timing})
 hwinterp_finish_variants()
