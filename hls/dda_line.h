@@ -95,7 +95,7 @@ class DdaLine {
       carry[i] = sum[i][ACC_W];
       want.want_valid[i] = act_q_ && inc_q_[i] != 0;
       want.want_dir[i] = neg_q_[i];
-      if (carry[i] && !out_.ready(i, in.timing, want)) stall = true;
+      if (carry[i] && !out_.ready(i, want)) stall = true;
     }
     const bool tick = feed_.tick(in.feed, act_q_);
     const bool advance = tick && !stall && !in.abort;

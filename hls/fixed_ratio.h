@@ -97,7 +97,7 @@ class FixedRatio {
       all_fin = all_fin && (!left[i] || (cnt_q_[i] == 1 && carry[i]));
       want.want_valid[i] = act_q_ && left[i];
       want.want_dir[i] = neg_q_[i];
-      if (must[i] && !out_.ready(i, in.timing, want)) stall = true;
+      if (must[i] && !out_.ready(i, want)) stall = true;
     }
     const bool tick = feed_.tick(in.feed, act_q_);
     const bool advance = tick && !stall && !in.abort;

@@ -123,7 +123,7 @@ class PpcArc {
     bool stall = false;
     for (int i = 0; i < AXES; ++i) {
       want.want_dir[i] = line_q_ ? lneg_q_[i] : mneg_q_[i];
-      if (carry[i] && !out_.ready(i, in.timing, want)) stall = true;
+      if (carry[i] && !out_.ready(i, want)) stall = true;
     }
     const bool tick = feed_.tick(in.feed, act_q_);
     const bool advance = tick && !stall && !in.abort;

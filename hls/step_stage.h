@@ -1,5 +1,6 @@
 // The output stage shared by every core: per axis a StepdirAxis and a signed
-// position counter, the cycle behaviour of rtl/step_stage.sv (see there for
+// position counter, and once for all axes the settings as the axes take them
+// (StepdirTiming): the cycle behaviour of rtl/step_stage.sv (see there for
 // the contract). Synthesizable subset: SystemC integers, fixed arrays.
 #pragma once
 
@@ -23,6 +24,7 @@ class StepStage {
   };
 
   void reset() {
+    timing_.reset();
     for (int i = 0; i < AXES; ++i) {
       axis_[i].reset();
       pos_q_[i] = 0;
@@ -30,14 +32,16 @@ class StepStage {
   }
 
   // A pulse may start on axis `i` on the next clock (combinational).
-  bool ready(int i, const Settings& s, const Request& r) const {
-    return axis_[i].ready(s, r.want_valid[i], r.want_dir[i]);
+  bool ready(int i, const Request& r) const {
+    return axis_[i].ready(r.want_valid[i], r.want_dir[i]);
   }
 
   // One rising clock edge; fire[i] only for ready axes.
   void clock(const Settings& s, const Request& r, const bool (&fire)[AXES]) {
+    const StepdirPrepared<TIM_W> p = timing_.prepare(s);
+    timing_.clock();
     for (int i = 0; i < AXES; ++i) {
-      axis_[i].tick(s, r.want_valid[i], r.want_dir[i], fire[i]);
+      axis_[i].tick(p, r.want_valid[i], r.want_dir[i], fire[i]);
       if (fire[i]) pos_q_[i] = r.want_dir[i] ? pos_t(pos_q_[i] - 1) : pos_t(pos_q_[i] + 1);
     }
   }
@@ -69,6 +73,7 @@ class StepStage {
   }
 
  private:
+  StepdirTiming<TIM_W> timing_;
   StepdirAxis<TIM_W> axis_[AXES];
   pos_t pos_q_[AXES];
 };

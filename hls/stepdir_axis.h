@@ -1,80 +1,112 @@
 // Step/dir output stage of one axis: the cycle behaviour of rtl/stepdir_axis.sv.
-// See that file for the timing contract; the comments here say how the C++
-// mirrors it. Synthesizable subset: SystemC integers, no floats, no heap.
+// See that file for the timing contract (a phase keeps the setting of the
+// clock it starts on) and how the counters and flags work; the C++ mirrors it
+// register for register. Synthesizable subset: SystemC integers, no floats,
+// no heap.
 #pragma once
 
 #include <systemc>
 
-namespace hwinterp::hls {
+#include "hls/stepdir_timing.h"
 
-template <int TIM_W>
-struct StepdirSettings {
-  sc_dt::sc_uint<TIM_W> step_len, step_space, dir_setup, dir_hold;
-};
+namespace hwinterp::hls {
 
 template <int TIM_W>
 class StepdirAxis {
  public:
   using tim_t = sc_dt::sc_uint<TIM_W>;
-  using Settings = StepdirSettings<TIM_W>;
+  using Prepared = StepdirPrepared<TIM_W>;
 
-  // The reset counts as the end of a pulse and a change of dir (see the RTL).
   void reset() {
-    step_q_ = false;
-    dir_q_ = false;
-    high_q_ = 0;
-    low_q_ = 1;
-    dir_age_q_ = 1;
+    step_q_ = dir_q_ = false;
+    tim_q_ = hold_q_ = setup_q_ = 0;
+    v_q_ = w_q_ = true;
+    tim_one_q_ = hold_ok_q_ = setup_ok_q_ = pulse_ok_q_ = false;
   }
 
   // A pulse may start on the next clock (combinational, like ready_o).
-  bool ready(const Settings& s, bool want_valid, bool want_dir) const {
-    return !step_q_ && want_valid && want_dir == dir_q_ && low_q_ >= at_least_one(s.step_space) &&
-           dir_age_q_ >= at_least_one(s.dir_setup);
+  bool ready(bool want_valid, bool want_dir) const {
+    return pulse_ok_q_ && want_valid && want_dir == dir_q_;
   }
 
   // One rising clock edge.
-  void tick(const Settings& s, bool want_valid, bool want_dir, bool fire) {
-    const bool dir_change =
-        !step_q_ && want_valid && want_dir != dir_q_ && low_q_ >= at_least_one(s.dir_hold);
-    bool step_d = step_q_;
-    tim_t high_d = high_q_, low_d = low_q_;
-    if (step_q_) {
-      if (high_q_ >= at_least_one(s.step_len)) {
+  void tick(const Prepared& p, bool want_valid, bool want_dir, bool fire) {
+    const bool turn = hold_ok_q_ && want_valid && want_dir != dir_q_;
+    bool step_d = step_q_, v_d = v_q_, tim_one_d = tim_one_q_, hold_ok_d = hold_ok_q_;
+    tim_t tim_d = tim_q_, hold_d = hold_q_;
+    if (p.fresh) {
+      tim_d = p.space;
+      hold_d = p.hold;
+      tim_one_d = p.space_two;
+      hold_ok_d = p.hold_two;
+    } else if (step_q_) {
+      if (tim_one_q_) {
         step_d = false;
-        low_d = 1;
+        tim_d = p.space;
+        hold_d = p.hold;
+        v_d = false;
+        tim_one_d = p.space_one;
+        hold_ok_d = p.hold_one;
       } else {
-        high_d = high_q_ + 1;
+        tim_d = tim_q_ - 1;
+        tim_one_d = le2_off(tim_q_, false);
       }
     } else if (fire) {
       step_d = true;
-      high_d = 1;
-    } else if (low_q_ != kSat) {
-      low_d = low_q_ + 1;
+      tim_d = p.len;
+      v_d = false;
+      tim_one_d = p.len_one;
+      hold_ok_d = false;
+    } else {
+      if (!tim_one_q_) {
+        tim_d = tim_q_ - 1;
+        tim_one_d = le2_off(tim_q_, v_q_);
+      }
+      if (!hold_ok_q_) {
+        hold_d = hold_q_ - 1;
+        hold_ok_d = le2_off(hold_q_, v_q_);
+      }
     }
-    tim_t dir_age_d = dir_age_q_ != kSat ? tim_t(dir_age_q_ + 1) : dir_age_q_;
-    if (dir_change) {
-      dir_q_ = want_dir;
-      dir_age_d = 1;
+
+    bool dir_d = dir_q_, w_d = w_q_, setup_ok_d = setup_ok_q_;
+    tim_t setup_d = setup_q_;
+    if (p.fresh) {
+      setup_d = p.setup;
+      setup_ok_d = p.setup_two;
+    } else if (turn) {
+      dir_d = want_dir;
+      setup_d = p.setup;
+      w_d = false;
+      setup_ok_d = p.setup_one;
+    } else if (!setup_ok_q_) {
+      setup_d = setup_q_ - 1;
+      setup_ok_d = le2_off(setup_q_, w_q_);
     }
+
     step_q_ = step_d;
-    high_q_ = high_d;
-    low_q_ = low_d;
-    dir_age_q_ = dir_age_d;
+    dir_q_ = dir_d;
+    tim_q_ = tim_d;
+    hold_q_ = hold_d;
+    setup_q_ = setup_d;
+    v_q_ = v_d;
+    w_q_ = w_d;
+    tim_one_q_ = tim_one_d;
+    hold_ok_q_ = hold_ok_d;
+    setup_ok_q_ = setup_ok_d;
+    pulse_ok_q_ = !step_d && tim_one_d && setup_ok_d;
   }
 
   bool step() const { return step_q_; }
   bool dir() const { return dir_q_; }
 
  private:
-  static constexpr uint64_t kSat = (uint64_t{1} << TIM_W) - 1;
-  static tim_t at_least_one(const tim_t& v) { return v == 0 ? tim_t(1) : v; }
+  // c - off <= 2 (off: the counter's offset of one until its first phase after reset).
+  static bool le2_off(const tim_t& c, bool off) { return c.to_uint64() <= (off ? 3u : 2u); }
 
-  bool step_q_ = false;
-  bool dir_q_ = false;
-  tim_t high_q_ = 0;     // cycles step has been high, this one included
-  tim_t low_q_ = 1;      // cycles step has been low (saturating)
-  tim_t dir_age_q_ = 1;  // cycles dir has held its value (saturating)
+  bool step_q_ = false, dir_q_ = false;
+  tim_t tim_q_ = 0, hold_q_ = 0, setup_q_ = 0;
+  bool v_q_ = true, w_q_ = true;
+  bool tim_one_q_ = false, hold_ok_q_ = false, setup_ok_q_ = false, pulse_ok_q_ = false;
 };
 
 }  // namespace hwinterp::hls

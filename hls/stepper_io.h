@@ -10,7 +10,7 @@
 
 #include <systemc>
 
-#include "hls/stepdir_axis.h"
+#include "hls/stepdir_timing.h"
 
 namespace hwinterp::hls {
 

@@ -1,3 +1,4 @@
+stepdir_timing.sv
 stepdir_axis.sv
 step_stage.sv
 feed_accum.sv

@@ -1,5 +1,7 @@
 // The output stage shared by every core: per axis a stepdir_axis (hostmot2
-// step/dir timing, see rtl/stepdir_axis.sv) and a signed position counter.
+// step/dir timing, see rtl/stepdir_axis.sv) and a signed position counter,
+// and once for all axes the settings as the axes take them
+// (rtl/stepdir_timing.sv).
 //
 // The engine says, per axis, whether the running command moves the axis at
 // all (want_valid_i) and in which direction (want_dir_i: 1 = negative); the
@@ -19,7 +21,7 @@ module step_stage #(
 ) (
   input  logic                  clk_i,
   input  logic                  rst_ni,
-  // hostmot2 timing in clocks (0 acts as 1), applied from the clock that samples them
+  // hostmot2 timing in clocks (0 acts as 1); a phase takes the value of the clock it starts on
   input  logic [TIM_W-1:0]      step_len_i,
   input  logic [TIM_W-1:0]      step_space_i,
   input  logic [TIM_W-1:0]      dir_setup_i,
@@ -32,6 +34,32 @@ module step_stage #(
   output logic [AXES-1:0]       dir_o,         // 1: negative motion
   output logic [AXES*POS_W-1:0] pos_o          // axis i in bits [i*POS_W +: POS_W]
 );
+  logic [TIM_W-1:0] len, space, setup, hold;
+  logic len_one, space_one, setup_one, hold_one, space_two, setup_two, hold_two, fresh;
+
+  stepdir_timing #(
+    .TIM_W(TIM_W)
+  ) u_timing (
+    .clk_i,
+    .rst_ni,
+    .step_len_i,
+    .step_space_i,
+    .dir_setup_i,
+    .dir_hold_i,
+    .len_o      (len),
+    .space_o    (space),
+    .setup_o    (setup),
+    .hold_o     (hold),
+    .len_one_o  (len_one),
+    .space_one_o(space_one),
+    .setup_one_o(setup_one),
+    .hold_one_o (hold_one),
+    .space_two_o(space_two),
+    .setup_two_o(setup_two),
+    .hold_two_o (hold_two),
+    .fresh_o    (fresh)
+  );
+
   for (genvar i = 0; i < AXES; i++) begin : g_axis
     logic [POS_W-1:0] pos_q;
 
@@ -46,10 +74,18 @@ module step_stage #(
     ) u_stepdir (
       .clk_i,
       .rst_ni,
-      .step_len_i,
-      .step_space_i,
-      .dir_setup_i,
-      .dir_hold_i,
+      .len_i       (len),
+      .space_i     (space),
+      .setup_i     (setup),
+      .hold_i      (hold),
+      .len_one_i   (len_one),
+      .space_one_i (space_one),
+      .setup_one_i (setup_one),
+      .hold_one_i  (hold_one),
+      .space_two_i (space_two),
+      .setup_two_i (setup_two),
+      .hold_two_i  (hold_two),
+      .fresh_i     (fresh),
       .want_valid_i(want_valid_i[i]),
       .want_dir_i  (want_dir_i[i]),
       .fire_i      (fire_i[i]),

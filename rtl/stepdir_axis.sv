@@ -1,13 +1,17 @@
 // Step/dir output stage of one axis (the hostmot2 timing set).
 //
 // Run-time settings, in clock cycles; a setting of 0 acts as 1:
-//   step_len_i    step_o high for exactly max(step_len_i, 1) cycles
-//   step_space_i  step_o low for at least max(step_space_i, 1) cycles between pulses
-//   dir_setup_i   dir_o stable at least max(dir_setup_i, 1) cycles before step_o rises
-//   dir_hold_i    dir_o stable at least max(dir_hold_i, 1) cycles after step_o falls
-// The stage never violates them: ready_o says whether a pulse may start on the
-// next clock, and the engine only fires a ready axis (it stalls otherwise), so
-// no step is ever lost. A setting applies from the clock that samples it.
+//   step_len     step_o high for exactly max(step_len, 1) cycles
+//   step_space   step_o low for at least max(step_space, 1) cycles between pulses
+//   dir_setup    dir_o stable at least max(dir_setup, 1) cycles before step_o rises
+//   dir_hold     dir_o stable at least max(dir_hold, 1) cycles after step_o falls
+// A phase takes the setting of the clock it starts on and keeps it: a pulse
+// the step_len of the clock that fires it, the space and the hold the values
+// of the clock the pulse falls on, the setup the value of the clock dir_o
+// turns on. (With settings that do not change, this is the same as checking
+// every clock.) The stage never violates them: ready_o says whether a pulse
+// may start on the next clock, and the engine only fires a ready axis (it
+// stalls otherwise), so no step is ever lost.
 //
 // dir_o follows want_dir_i by itself as soon as the hold time allows it, so
 // a reversal costs only the hold + setup times, not a round trip.
@@ -16,85 +20,160 @@
 // dir_o to 0 whatever it was (abort_i of the core is the safe stop). The stage
 // then counts the reset as the end of a pulse and as a change of dir_o: the
 // first pulse after reset waits step_space and dir_setup, and a turn of dir_o
-// waits dir_hold, counted from the reset.
+// waits dir_hold, counted from the reset with the settings of the first clock
+// after it. On that first clock the axis is not ready and does not turn
+// (no core runs a command on it).
 // dir_o = 0 means positive motion, 1 negative (the sign bit of the delta).
+//
+// Timing: ready_o is an AND of registers and the engine's want_*; every
+// compare a clock needs is decided a clock ahead into a flag register
+// (tim_one_q, hold_ok_q, setup_ok_q, pulse_ok_q), and the counters count
+// down to 1 (no compare against a setting). The settings arrive prepared
+// once for all axes by rtl/stepdir_timing.sv.
 module stepdir_axis #(
-  parameter int TIM_W = 16
+  parameter int TIM_W = 16  // width of the settings and counters (>= 2)
 ) (
   input  logic             clk_i,
   input  logic             rst_ni,
-  input  logic [TIM_W-1:0] step_len_i,
-  input  logic [TIM_W-1:0] step_space_i,
-  input  logic [TIM_W-1:0] dir_setup_i,
-  input  logic [TIM_W-1:0] dir_hold_i,
+  // The settings, each at least 1, and their compares (rtl/stepdir_timing.sv)
+  input  logic [TIM_W-1:0] len_i,
+  input  logic [TIM_W-1:0] space_i,
+  input  logic [TIM_W-1:0] setup_i,
+  input  logic [TIM_W-1:0] hold_i,
+  input  logic             len_one_i,    // len_i == 1
+  input  logic             space_one_i,  // space_i == 1
+  input  logic             setup_one_i,  // setup_i == 1
+  input  logic             hold_one_i,   // hold_i == 1
+  input  logic             space_two_i,  // space_i <= 2
+  input  logic             setup_two_i,  // setup_i <= 2
+  input  logic             hold_two_i,   // hold_i <= 2
+  input  logic             fresh_i,      // the first clock after reset
+  // The engine
   input  logic             want_valid_i,  // the active command moves this axis...
   input  logic             want_dir_i,    // ...in this direction
   input  logic             fire_i,        // start a pulse next clock (only when ready_o)
   output logic             ready_o,
+  // The pins
   output logic             step_o,
   output logic             dir_o
 );
   localparam logic [TIM_W-1:0] One = TIM_W'(1);
-  // Not '1: Yosys (<= 0.58) reads '1 in a typed localparam as 1 (YosysHQ/yosys#5465).
-  localparam logic [TIM_W-1:0] Sat = {TIM_W{1'b1}};
 
-  // Cycle counters include the current cycle, so "held for n cycles" is cnt >= n.
+  // tim_q: while step_o is high, its cycles left, this one included; while
+  // low, the space still to wait, plus one. hold_q and setup_q likewise count
+  // the hold (from the fall) and the setup (from the turn) down to 1. Until
+  // the first pulse (first turn) after reset, tim_q and hold_q (setup_q) are
+  // one more than that (v_q, w_q): they start on the first clock after
+  // reset, which counts as the first clock of the phases the reset began.
   logic             step_q, step_d;
   logic             dir_q, dir_d;
-  logic [TIM_W-1:0] high_q, high_d;  // cycles step_o has been high
-  logic [TIM_W-1:0] low_q, low_d;  // cycles step_o has been low (saturating)
-  logic [TIM_W-1:0] dir_age_q, dir_age_d;  // cycles dir_o has held its value (saturating)
+  logic [TIM_W-1:0] tim_q, tim_d;
+  logic [TIM_W-1:0] hold_q, hold_d;
+  logic [TIM_W-1:0] setup_q, setup_d;
+  logic             v_q, v_d;
+  logic             w_q, w_d;
+  // Flags, each a compare of the counters above decided a clock ahead.
+  logic             tim_one_q, tim_one_d;  // tim (without v) <= 1: last high cycle / space done
+  logic             hold_ok_q, hold_ok_d;  // step_o low and the hold done: dir_o may turn
+  logic             setup_ok_q, setup_ok_d;  // the setup done
+  logic             pulse_ok_q, pulse_ok_d;  // step_o low, space and setup done
 
-  logic [TIM_W-1:0] len, space, setup, hold;
-  assign len   = (step_len_i == '0) ? One : step_len_i;
-  assign space = (step_space_i == '0) ? One : step_space_i;
-  assign setup = (dir_setup_i == '0) ? One : dir_setup_i;
-  assign hold  = (dir_hold_i == '0) ? One : dir_hold_i;
+  // c - off <= 2 for a counter c with offset off (0 or 1).
+  function automatic logic le2_off(input logic [TIM_W-1:0] c, input logic off);
+    le2_off = ((c >> 2) == '0) && (off || !(c[1] && c[0]));
+  endfunction
 
-  logic dir_change;
-  assign dir_change = !step_q && want_valid_i && (want_dir_i != dir_q) && (low_q >= hold);
-  assign ready_o = !step_q && want_valid_i && (want_dir_i == dir_q) && (low_q >= space) &&
-                   (dir_age_q >= setup);
+  logic turn;
+  assign turn    = hold_ok_q && want_valid_i && (want_dir_i != dir_q);
+  assign ready_o = pulse_ok_q && want_valid_i && (want_dir_i == dir_q);
 
   always_comb begin
-    step_d = step_q;
-    high_d = high_q;
-    low_d  = low_q;
-    if (step_q) begin
-      if (high_q >= len) begin
-        step_d = 1'b0;
-        low_d  = One;
+    step_d    = step_q;
+    tim_d     = tim_q;
+    hold_d    = hold_q;
+    v_d       = v_q;
+    tim_one_d = tim_one_q;
+    hold_ok_d = hold_ok_q;
+    if (fresh_i) begin
+      // The reset ended a pulse one clock ago.
+      tim_d     = space_i;
+      hold_d    = hold_i;
+      tim_one_d = space_two_i;
+      hold_ok_d = hold_two_i;
+    end else if (step_q) begin
+      if (tim_one_q) begin
+        step_d    = 1'b0;
+        tim_d     = space_i;
+        hold_d    = hold_i;
+        v_d       = 1'b0;
+        tim_one_d = space_one_i;
+        hold_ok_d = hold_one_i;
       end else begin
-        high_d = high_q + One;
+        tim_d     = tim_q - One;
+        tim_one_d = le2_off(tim_q, 1'b0);
       end
     end else if (fire_i) begin
-      step_d = 1'b1;
-      high_d = One;
-    end else if (low_q != Sat) begin
-      low_d = low_q + One;
+      step_d    = 1'b1;
+      tim_d     = len_i;
+      v_d       = 1'b0;
+      tim_one_d = len_one_i;
+      hold_ok_d = 1'b0;
+    end else begin
+      if (!tim_one_q) begin
+        tim_d     = tim_q - One;
+        tim_one_d = le2_off(tim_q, v_q);
+      end
+      if (!hold_ok_q) begin
+        hold_d    = hold_q - One;
+        hold_ok_d = le2_off(hold_q, v_q);
+      end
     end
 
-    dir_d     = dir_q;
-    dir_age_d = (dir_age_q != Sat) ? dir_age_q + One : dir_age_q;
-    if (dir_change) begin
-      dir_d     = want_dir_i;
-      dir_age_d = One;
+    dir_d      = dir_q;
+    setup_d    = setup_q;
+    w_d        = w_q;
+    setup_ok_d = setup_ok_q;
+    if (fresh_i) begin
+      setup_d    = setup_i;
+      setup_ok_d = setup_two_i;
+    end else if (turn) begin
+      dir_d      = want_dir_i;
+      setup_d    = setup_i;
+      w_d        = 1'b0;
+      setup_ok_d = setup_one_i;
+    end else if (!setup_ok_q) begin
+      setup_d    = setup_q - One;
+      setup_ok_d = le2_off(setup_q, w_q);
     end
+
+    pulse_ok_d = !step_d && tim_one_d && setup_ok_d;
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      step_q    <= 1'b0;
-      dir_q     <= 1'b0;
-      high_q    <= '0;
-      low_q     <= One;  // as if a pulse had just ended...
-      dir_age_q <= One;  // ...and dir_o had just changed
+      step_q     <= 1'b0;
+      dir_q      <= 1'b0;
+      tim_q      <= '0;
+      hold_q     <= '0;
+      setup_q    <= '0;
+      v_q        <= 1'b1;
+      w_q        <= 1'b1;
+      tim_one_q  <= 1'b0;
+      hold_ok_q  <= 1'b0;
+      setup_ok_q <= 1'b0;
+      pulse_ok_q <= 1'b0;
     end else begin
-      step_q    <= step_d;
-      dir_q     <= dir_d;
-      high_q    <= high_d;
-      low_q     <= low_d;
-      dir_age_q <= dir_age_d;
+      step_q     <= step_d;
+      dir_q      <= dir_d;
+      tim_q      <= tim_d;
+      hold_q     <= hold_d;
+      setup_q    <= setup_d;
+      v_q        <= v_d;
+      w_q        <= w_d;
+      tim_one_q  <= tim_one_d;
+      hold_ok_q  <= hold_ok_d;
+      setup_ok_q <= setup_ok_d;
+      pulse_ok_q <= pulse_ok_d;
     end
   end
 

@@ -7,7 +7,7 @@
 # yosys-smtbmc + z3.
 #
 # Usage: scripts/formal.sh [--depth N] [--tim-w "W..."] [--out DIR]
-#   --depth N     BMC depth and maximum induction length (default 30)
+#   --depth N     BMC depth and maximum induction length (default 40)
 #   --tim-w LIST  TIM_W values to check (default "3 4"). The proof is per
 #                 width: induction needs about 2^TIM_W steps (the saturating
 #                 counters), so the design's TIM_W=16 is not checked directly;
@@ -23,7 +23,7 @@ build=${HWINTERP_BUILD_DIR:-$root/build}
 die() { echo "formal: $*" >&2; exit 1; }
 usage() { sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2; exit 2; }
 
-depth=30
+depth=40
 widths="3 4"
 out=""
 while [ $# -gt 0 ]; do
@@ -51,14 +51,14 @@ out=${out:-$build/reports/formal}
 mkdir -p "$out"
 # Each block: its RTL files (dependencies first).
 declare -A block_files=(
-  [stepdir_axis]="$root/rtl/stepdir_axis.sv"
-  [step_stage]="$root/rtl/stepdir_axis.sv $root/rtl/step_stage.sv"
+  [stepdir_axis]="$root/rtl/stepdir_timing.sv $root/rtl/stepdir_axis.sv"
+  [step_stage]="$root/rtl/stepdir_timing.sv $root/rtl/stepdir_axis.sv $root/rtl/step_stage.sv"
 )
 blocks=(stepdir_axis step_stage)
 
 # Yosys 0.23 silently misreads some SystemVerilog literals; a proof about the
 # misread design would prove nothing about the RTL.
-python3 "$root/scripts/synth/yosys_compat.py" "$root/rtl/stepdir_axis.sv" "$root/rtl/step_stage.sv" \
+python3 "$root/scripts/synth/yosys_compat.py" "$root/rtl/stepdir_timing.sv" "$root/rtl/stepdir_axis.sv" "$root/rtl/step_stage.sv" \
   "$root"/rtl/formal/*_props.sv 2>"$out/compat_check.log" ||
   die "Yosys 0.23 would misread the RTL; see $out/compat_check.log"
 

@@ -9,8 +9,8 @@
 //            stop it equals the pulses that reached the wire;
 //   a_fire   a fire_i on an axis starts its pulse on the next clock and on no
 //            other axis.
-// Assumptions: reset in the first cycle only; settings constant after reset;
-// the engine fires only ready axes.
+// Assumptions: reset in the first cycle only; the engine fires only ready
+// axes. The settings are free on every clock.
 module step_stage_props #(
   parameter int AXES  = 2,
   parameter int POS_W = 4,
@@ -64,18 +64,13 @@ module step_stage_props #(
   end
 
   logic f_init = 1'b1;
-  logic [4*TIM_W-1:0] f_set;
-  always_ff @(posedge clk_i) begin
-    f_init <= 1'b0;
-    f_set  <= {step_len_i, step_space_i, dir_setup_i, dir_hold_i};
-  end
+  always_ff @(posedge clk_i) f_init <= 1'b0;
 
   logic [AXES-1:0] rise;
   assign rise = step & ~p_step;
 
   always_comb begin
     assume(rst_ni == !f_init);
-    if (!f_init) assume({step_len_i, step_space_i, dir_setup_i, dir_hold_i} == f_set);
     assume((fire_i & ~ready) == '0);
     if (!f_init) a_fire: assert(rise == p_fire);
   end

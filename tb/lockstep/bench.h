@@ -309,7 +309,10 @@ class Bench {
     a.cycle = case_cycle;
     a.position = scoreboard_->position();
     a.on_reference_path = scoreboard_->abort();
+    // A pulse already high keeps the length it started with.
     a.idle_bound = std::max<uint32_t>(frame_.timing.step_len, 1) - 1;
+    for (const auto& m : monitors_)
+      a.idle_bound = std::max<uint64_t>(a.idle_bound, std::max<uint32_t>(m.high_len(), 1) - 1);
     if (!a.on_reference_path)
       record_capped(r.scoreboard_errors, r.scoreboard_error_count,
                     "abort at cycle " + std::to_string(cycle_) + ": position " +

@@ -7,6 +7,7 @@ void StepdirMonitor::reset(uint64_t cycle) {
   have_rise_ = false;
   have_fall_ = have_dir_change_ = true;
   fall_ = dir_change_ = cycle;
+  after_reset_ = true;
 }
 
 void StepdirMonitor::check(uint64_t cycle, const char* rule, uint64_t measured, uint32_t setting,
@@ -18,27 +19,33 @@ void StepdirMonitor::check(uint64_t cycle, const char* rule, uint64_t measured, 
 void StepdirMonitor::observe(uint64_t cycle, bool step, bool dir, const StepdirTiming& t,
                              std::vector<TimingViolation>& kept, uint64_t& count) {
   const bool rise = step && !step_, fall = !step && step_, dir_change = dir != dir_;
+  if (after_reset_) {
+    after_reset_ = false;
+    space_ = t.step_space;
+    hold_ = t.dir_hold;
+    setup_ = t.dir_setup;
+  }
   // A value seen after edge c was first driven at edge c: a pulse that rose
   // at r and fell at f was high for f - r cycles.
   if (rise) {
-    if (have_fall_) check(cycle, "step_space", cycle - fall_, t.step_space, kept, count);
+    if (have_fall_) check(cycle, "step_space", cycle - fall_, space_, kept, count);
     // Setup counts from the cycle dir took its value; a change on the rise
     // edge itself gives 0.
     if (dir_change)
       check(cycle, "dir_setup", 0, t.dir_setup, kept, count);
     else if (have_dir_change_)
-      check(cycle, "dir_setup", cycle - dir_change_, t.dir_setup, kept, count);
+      check(cycle, "dir_setup", cycle - dir_change_, setup_, kept, count);
   }
-  if (fall && have_rise_) check(cycle, "step_len", cycle - rise_, t.step_len, kept, count);
+  if (fall && have_rise_) check(cycle, "step_len", cycle - rise_, len_, kept, count);
   if (dir_change) {
     if (step_ || step)
       check(cycle, "dir_hold", 0, t.dir_hold, kept, count);  // changed while high
     else if (have_fall_)
-      check(cycle, "dir_hold", cycle - fall_, t.dir_hold, kept, count);
+      check(cycle, "dir_hold", cycle - fall_, hold_, kept, count);
   }
-  if (rise) rise_ = cycle, have_rise_ = true;
-  if (fall) fall_ = cycle, have_fall_ = true;
-  if (dir_change) dir_change_ = cycle, have_dir_change_ = true;
+  if (rise) rise_ = cycle, have_rise_ = true, len_ = t.step_len;
+  if (fall) fall_ = cycle, have_fall_ = true, space_ = t.step_space, hold_ = t.dir_hold;
+  if (dir_change) dir_change_ = cycle, have_dir_change_ = true, setup_ = t.dir_setup;
   step_ = step;
   dir_ = dir;
 }

@@ -20,15 +20,21 @@ class StepdirMonitor {
   explicit StepdirMonitor(int axis) : axis_(axis) {}
 
   // The axis outputs after clock edge `cycle`, and the settings sampled at that
-  // edge (a core decides an edge with the settings it sampled then).
+  // edge. A phase keeps the setting of the edge it starts on
+  // (rtl/stepdir_axis.sv): a pulse the step_len of its rise, the space and
+  // the hold those of the fall, the setup that of the turn of dir.
   void observe(uint64_t cycle, bool step, bool dir, const StepdirTiming& timing,
                std::vector<TimingViolation>& kept, uint64_t& count);
 
   // rst_ni was low at edge `cycle`: the outputs are idle, and the reset
   // counts as the end of a pulse and a change of dir (rtl/stepdir_axis.sv):
   // the next pulse must keep step_space and dir_setup from it, a turn of dir
-  // dir_hold.
+  // dir_hold, with the settings of the first edge after the reset.
   void reset(uint64_t cycle);
+
+  // The step_len the pulse now high started with (0 acts as 1); 0 when the
+  // step is low.
+  uint32_t high_len() const { return step_ ? (len_ == 0 ? 1 : len_) : 0; }
 
  private:
   void check(uint64_t cycle, const char* rule, uint64_t measured, uint32_t setting,
@@ -39,6 +45,9 @@ class StepdirMonitor {
   // Cycle of the last edge; unset before the first reset (nothing to measure against).
   bool have_rise_ = false, have_fall_ = false, have_dir_change_ = false;
   uint64_t rise_ = 0, fall_ = 0, dir_change_ = 0;
+  // The settings each running phase started with.
+  uint32_t len_ = 1, space_ = 1, hold_ = 1, setup_ = 1;
+  bool after_reset_ = false;  // the next edge is the first after a reset
 };
 
 }  // namespace hwinterp::tb

@@ -39,7 +39,7 @@ struct AbortRecord {
   // Clocks from the abort edge until busy_o fell; -1 (JSON null): not
   // measured, a new command was taken first.
   int64_t idle_after_clocks = -1;
-  uint64_t idle_bound = 0;         // the core's promise: max(step_len, 1) - 1
+  uint64_t idle_bound = 0;         // the core's promise: max(L, 1) - 1, L the pulse's step_len
   bool on_reference_path = false;  // position is a point of the model's path
 };
 

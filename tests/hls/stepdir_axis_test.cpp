@@ -18,12 +18,16 @@ struct Trace {
 // Runs `cycles` clocks; the axis wants direction `want(c)` and fires whenever ready.
 template <typename Want>
 Trace run(StepdirSettings<16> s, int cycles, Want want) {
+  StepdirTiming<16> timing;
   StepdirAxis<16> a;
+  timing.reset();
   a.reset();
   Trace t;
   for (int c = 0; c < cycles; ++c) {
     const bool w = want(c);
-    a.tick(s, true, w, a.ready(s, true, w));
+    const StepdirPrepared<16> p = timing.prepare(s);
+    timing.clock();
+    a.tick(p, true, w, a.ready(true, w));
     t.step.push_back(a.step());
     t.dir.push_back(a.dir());
   }
