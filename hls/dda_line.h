@@ -31,16 +31,8 @@ class DdaLine {
   static_assert(ACC_W >= 2 && ACC_W <= 62,
                 "ACC_W out of range (the iteration count needs ACC_W+1 bits)");
   static_assert(POS_W >= 2 && POS_W <= 64, "POS_W out of range");
-  static constexpr int EXP_W = [] {  // $clog2(ACC_W + 1)
-    int w = 0;
-    while ((1 << w) < ACC_W + 1) ++w;
-    return w;
-  }();
-
   using acc_t = sc_dt::sc_uint<ACC_W>;
   using sum_t = sc_dt::sc_uint<ACC_W + 1>;
-  using left_t = sc_dt::sc_uint<ACC_W + 1>;
-  using exp_t = sc_dt::sc_uint<EXP_W>;
 
   // The core's own inputs: cmd_delta_i (two's complement, one per axis) and
   // half_preload_i (sampled with the command).
@@ -63,18 +55,20 @@ class DdaLine {
   DdaLine() { reset(); }
 
   void reset() {
-    buf_valid_q_ = false;
-    buf_exp_q_ = 0;
-    buf_half_q_ = false;
+    a_valid_q_ = b_valid_q_ = false;
+    a_any_q_ = 0;
+    a_half_q_ = false;
+    b_low_q_ = b_hm_q_ = b_a0_q_ = 0;
     act_q_ = false;
     left_q_ = 0;
+    left_zero_q_ = false;
+    hm_q_ = 0;
     done_q_ = false;
     for (int i = 0; i < AXES; ++i) {
-      buf_mag_q_[i] = 0;
-      buf_neg_q_[i] = false;
-      acc_q_[i] = 0;
-      inc_q_[i] = 0;
-      neg_q_[i] = false;
+      a_mag_q_[i] = b_mag_q_[i] = mag_q_[i] = 0;
+      a_neg_q_[i] = b_neg_q_[i] = neg_q_[i] = false;
+      a_moves_q_[i] = b_moves_q_[i] = moves_q_[i] = false;
+      s_q_[i] = 0;
     }
     feed_.reset();
     out_.reset();
@@ -88,86 +82,118 @@ class DdaLine {
     }
     // Combinational part, from the current registers and the inputs.
     bool carry[AXES], fire[AXES], stall = false;
-    sum_t sum[AXES];
     typename StepStage<AXES, POS_W, TIM_W>::Request want;
     for (int i = 0; i < AXES; ++i) {
-      sum[i] = sum_t(acc_q_[i]) + sum_t(inc_q_[i]);
-      carry[i] = sum[i][ACC_W];
-      want.want_valid[i] = act_q_ && inc_q_[i] != 0;
+      carry[i] = s_q_[i][ACC_W];
+      want.want_valid[i] = moves_q_[i];
       want.want_dir[i] = neg_q_[i];
       if (carry[i] && !out_.ready(i, want)) stall = true;
     }
     const bool tick = feed_.tick(in.feed, act_q_);
     const bool advance = tick && !stall && !in.abort;
-    const bool last = advance && left_q_ == 1;
-    const bool buf_take = buf_valid_q_ && (!act_q_ || last) && !in.abort;
-    const bool cmd_take = in.cmd_valid && !buf_valid_q_;
+    const bool last = advance && left_zero_q_;
+    const bool load = b_valid_q_ && (!act_q_ || last) && !in.abort;
+    const bool a_to_b = a_valid_q_ && (!b_valid_q_ || load) && !in.abort;
+    const bool cmd_take = in.cmd_valid && !a_valid_q_;
 
     // Output stage and feed first: they read the engine registers before they update.
     for (int i = 0; i < AXES; ++i) fire[i] = advance && carry[i];
     out_.clock(in.timing, want, fire);
     feed_.clock(in.feed, act_q_, stall);
 
-    // Engine registers.
+    // Engine: one adder per axis, the first value plus the magnitude on a
+    // load, else the next iteration (s | hm) + magnitude.
+    if (load || advance) {
+      for (int i = 0; i < AXES; ++i) {
+        const acc_t x = load ? b_a0_q_ : acc_t(s_q_[i].range(ACC_W - 1, 0) | hm_q_);
+        const acc_t y = load ? b_mag_q_[i] : mag_q_[i];
+        s_q_[i] = sum_t(x) + sum_t(y);
+      }
+    }
     if (advance) {
+      left_zero_q_ = left_q_ == 1;
       left_q_ = left_q_ - 1;
-      for (int i = 0; i < AXES; ++i) acc_q_[i] = sum[i].range(ACC_W - 1, 0);
       if (last) act_q_ = false;
     }
-    if (buf_take) {
+    for (int i = 0; i < AXES; ++i)
+      if (last || in.abort) moves_q_[i] = false;
+    if (load) {
       act_q_ = true;
-      left_q_ = left_t(1) << buf_exp_q_.to_uint();
+      left_q_ = b_low_q_;
+      left_zero_q_ = b_low_q_ == 0;
+      hm_q_ = b_hm_q_;
       for (int i = 0; i < AXES; ++i) {
-        acc_q_[i] = buf_half_q_ ? acc_t(acc_t(1) << (ACC_W - 1)) : acc_t(0);
-        inc_q_[i] = shifted(buf_mag_q_[i], buf_exp_q_.to_uint());
-        neg_q_[i] = buf_neg_q_[i];
+        mag_q_[i] = b_mag_q_[i];
+        neg_q_[i] = b_neg_q_[i];
+        moves_q_[i] = b_moves_q_[i];
       }
     }
     if (in.abort) act_q_ = false;
-    // Command buffer: magnitudes and exponent of the offered command.
-    if (cmd_take) load_buffer(in.cmd);
-    buf_valid_q_ = !in.abort && (cmd_take || (buf_valid_q_ && !buf_take));
     done_q_ = last;
+
+    // Buffer B from buffer A: the masks from the OR of the magnitudes.
+    if (a_to_b) {
+      const acc_t low = low_mask(a_any_q_);
+      const acc_t top = low ^ (low >> 1);
+      b_low_q_ = low;
+      b_hm_q_ = ~low;
+      b_a0_q_ = ~low | (a_half_q_ ? top : acc_t(0));
+      for (int i = 0; i < AXES; ++i) {
+        b_mag_q_[i] = a_mag_q_[i];
+        b_neg_q_[i] = a_neg_q_[i];
+        b_moves_q_[i] = a_moves_q_[i];
+      }
+    }
+    b_valid_q_ = !in.abort && (a_to_b || (b_valid_q_ && !load));
+    // Buffer A: the offered command's magnitudes and their OR.
+    if (cmd_take) load_buffer(in.cmd);
+    a_valid_q_ = !in.abort && (cmd_take || (a_valid_q_ && !a_to_b));
   }
 
-  Outputs outputs() const { return out_.outputs(!buf_valid_q_, act_q_ || buf_valid_q_, done_q_); }
+  Outputs outputs() const {
+    return out_.outputs(!a_valid_q_, act_q_ || a_valid_q_ || b_valid_q_, done_q_);
+  }
 
  private:
-  // Taking a command stores the magnitudes and n, the bit length of the
-  // largest one (the OR of the magnitudes has the same bit length as their
-  // maximum); the engine shifts them as it loads the command. Same split as
-  // the RTL, which keeps each clock's logic path short.
   void load_buffer(const Own& cmd) {
     acc_t any = 0;
     for (int i = 0; i < AXES; ++i) {
-      buf_neg_q_[i] = cmd.delta[i][ACC_W - 1];
-      buf_mag_q_[i] = buf_neg_q_[i] ? acc_t(-cmd.delta[i]) : cmd.delta[i];
-      any |= buf_mag_q_[i];
+      a_neg_q_[i] = cmd.delta[i][ACC_W - 1];
+      a_mag_q_[i] = a_neg_q_[i] ? acc_t(-cmd.delta[i]) : cmd.delta[i];
+      a_moves_q_[i] = cmd.delta[i] != 0;
+      any |= a_mag_q_[i];
     }
-    int n = 0;
-    for (int b = 0; b < ACC_W; ++b)
-      if (any[b]) n = b + 1;
-    buf_exp_q_ = n;
-    buf_half_q_ = cmd.half_preload;
+    a_any_q_ = any;
+    a_half_q_ = cmd.half_preload;
   }
 
-  // |delta| << (ACC_W - n); n = 0 only for an all-zero command.
-  static acc_t shifted(const acc_t& mag, unsigned n) {
-    return n == 0 ? acc_t(0) : acc_t(mag << (ACC_W - n));
+  // The bits below n, the bit length of `any`: 2^n - 1.
+  static acc_t low_mask(const acc_t& any) {
+    const uint64_t v = any.to_uint64();
+    if (v == 0) return 0;
+    int n = 64 - __builtin_clzll(v);
+    return acc_t(n >= 64 ? ~uint64_t{0} : (uint64_t{1} << n) - 1);
   }
 
-  // One-entry command buffer.
-  bool buf_valid_q_;
-  acc_t buf_mag_q_[AXES];
-  bool buf_neg_q_[AXES];
-  exp_t buf_exp_q_;
-  bool buf_half_q_;
+  // Buffer A: the taken command.
+  bool a_valid_q_;
+  acc_t a_mag_q_[AXES];
+  bool a_neg_q_[AXES], a_moves_q_[AXES];
+  acc_t a_any_q_;
+  bool a_half_q_;
+  // Buffer B: the command normalised.
+  bool b_valid_q_;
+  acc_t b_mag_q_[AXES];
+  bool b_neg_q_[AXES], b_moves_q_[AXES];
+  acc_t b_low_q_, b_hm_q_, b_a0_q_;
   // Engine.
   bool act_q_;
-  acc_t acc_q_[AXES];
-  acc_t inc_q_[AXES];
-  bool neg_q_[AXES];
-  left_t left_q_;
+  acc_t mag_q_[AXES];
+  sum_t s_q_[AXES];  // accumulator + magnitude, one iteration ahead; bit ACC_W is the carry
+  bool neg_q_[AXES], moves_q_[AXES];
+  acc_t hm_q_;
+  acc_t left_q_;
+  bool left_zero_q_;
   bool done_q_;
   FeedAccum<FEED_W> feed_;
   StepStage<AXES, POS_W, TIM_W> out_;

@@ -208,16 +208,17 @@ class LogStepper {
     fin.abort = in.abort;
     fine_.tick(fin);
 
-    // Tags of the segments in the fine stage (at most two: its buffer and
-    // its engine), oldest first: does the segment end its curve.
+    // Tags of the segments in the fine stage (at most three: its two buffer
+    // entries and its engine), oldest first: does the segment end its curve.
     if (in.abort) {
       tag_n_q_ = 0;
-      tag_q_[0] = tag_q_[1] = false;
+      tag_q_[0] = tag_q_[1] = tag_q_[2] = false;
     } else {
       int n = tag_n_q_;
       if (pop) {
         tag_q_[0] = tag_q_[1];
-        tag_q_[1] = false;
+        tag_q_[1] = tag_q_[2];
+        tag_q_[2] = false;
         --n;
       }
       if (seg_take) {
@@ -390,7 +391,7 @@ class LogStepper {
   bool seg_valid_q_, seg_last_q_;
   // Tags of the segments in the fine stage.
   sc_dt::sc_uint<2> tag_n_q_;
-  bool tag_q_[2];
+  bool tag_q_[3];
   Fine fine_;
   // Diagnostics (not hardware): counted by the model, never reset.
   uint64_t underrun_clocks_ = 0;

@@ -31,10 +31,9 @@ class StepStage {
     }
   }
 
-  // A pulse may start on axis `i` on the next clock (combinational).
-  bool ready(int i, const Request& r) const {
-    return axis_[i].ready(r.want_valid[i], r.want_dir[i]);
-  }
+  // A pulse in the requested direction may start on axis `i` on the next
+  // clock (combinational; whether the axis moves at all is the engine's).
+  bool ready(int i, const Request& r) const { return axis_[i].ready(r.want_dir[i]); }
 
   // One rising clock edge; fire[i] only for ready axes.
   void clock(const Settings& s, const Request& r, const bool (&fire)[AXES]) {

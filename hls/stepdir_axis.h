@@ -21,50 +21,44 @@ class StepdirAxis {
     step_q_ = dir_q_ = false;
     tim_q_ = hold_q_ = setup_q_ = 0;
     v_q_ = w_q_ = true;
-    tim_one_q_ = hold_ok_q_ = setup_ok_q_ = pulse_ok_q_ = false;
+    tim_one_q_ = hold_ok_q_ = setup_ok_q_ = ok_pos_q_ = ok_neg_q_ = false;
   }
 
-  // A pulse may start on the next clock (combinational, like ready_o).
-  bool ready(bool want_valid, bool want_dir) const {
-    return pulse_ok_q_ && want_valid && want_dir == dir_q_;
-  }
+  // A pulse in direction want_dir may start on the next clock (combinational,
+  // like ready_o; want_valid is the engine's business).
+  bool ready(bool want_dir) const { return want_dir ? ok_neg_q_ : ok_pos_q_; }
 
   // One rising clock edge.
   void tick(const Prepared& p, bool want_valid, bool want_dir, bool fire) {
     const bool turn = hold_ok_q_ && want_valid && want_dir != dir_q_;
-    bool step_d = step_q_, v_d = v_q_, tim_one_d = tim_one_q_, hold_ok_d = hold_ok_q_;
-    tim_t tim_d = tim_q_, hold_d = hold_q_;
+    // The next state without a pulse starting, then fire on top (as the RTL).
+    bool step_nf = step_q_, v_nf = v_q_, tim_one_nf = tim_one_q_, hold_ok_nf = hold_ok_q_;
+    tim_t tim_nf = tim_q_, hold_d = hold_q_;
     if (p.fresh) {
-      tim_d = p.space;
+      tim_nf = p.space;
       hold_d = p.hold;
-      tim_one_d = p.space_two;
-      hold_ok_d = p.hold_two;
+      tim_one_nf = p.space_two;
+      hold_ok_nf = p.hold_two;
     } else if (step_q_) {
       if (tim_one_q_) {
-        step_d = false;
-        tim_d = p.space;
+        step_nf = false;
+        tim_nf = p.space;
         hold_d = p.hold;
-        v_d = false;
-        tim_one_d = p.space_one;
-        hold_ok_d = p.hold_one;
+        v_nf = false;
+        tim_one_nf = p.space_one;
+        hold_ok_nf = p.hold_one;
       } else {
-        tim_d = tim_q_ - 1;
-        tim_one_d = le2_off(tim_q_, false);
+        tim_nf = tim_q_ - 1;
+        tim_one_nf = le2_off(tim_q_, false);
       }
-    } else if (fire) {
-      step_d = true;
-      tim_d = p.len;
-      v_d = false;
-      tim_one_d = p.len_one;
-      hold_ok_d = false;
     } else {
       if (!tim_one_q_) {
-        tim_d = tim_q_ - 1;
-        tim_one_d = le2_off(tim_q_, v_q_);
+        tim_nf = tim_q_ - 1;
+        tim_one_nf = le2_off(tim_q_, v_q_);
       }
       if (!hold_ok_q_) {
         hold_d = hold_q_ - 1;
-        hold_ok_d = le2_off(hold_q_, v_q_);
+        hold_ok_nf = le2_off(hold_q_, v_q_);
       }
     }
 
@@ -82,18 +76,20 @@ class StepdirAxis {
       setup_d = setup_q_ - 1;
       setup_ok_d = le2_off(setup_q_, w_q_);
     }
+    const bool pulse_nf = !step_nf && tim_one_nf && setup_ok_d;
 
-    step_q_ = step_d;
+    step_q_ = step_nf || fire;
     dir_q_ = dir_d;
-    tim_q_ = tim_d;
+    tim_q_ = fire ? p.len : tim_nf;
     hold_q_ = hold_d;
     setup_q_ = setup_d;
-    v_q_ = v_d;
+    v_q_ = v_nf && !fire;
     w_q_ = w_d;
-    tim_one_q_ = tim_one_d;
-    hold_ok_q_ = hold_ok_d;
+    tim_one_q_ = fire ? p.len_one : tim_one_nf;
+    hold_ok_q_ = hold_ok_nf && !fire;
     setup_ok_q_ = setup_ok_d;
-    pulse_ok_q_ = !step_d && tim_one_d && setup_ok_d;
+    ok_pos_q_ = pulse_nf && !fire && !dir_d;
+    ok_neg_q_ = pulse_nf && !fire && dir_d;
   }
 
   bool step() const { return step_q_; }
@@ -106,7 +102,8 @@ class StepdirAxis {
   bool step_q_ = false, dir_q_ = false;
   tim_t tim_q_ = 0, hold_q_ = 0, setup_q_ = 0;
   bool v_q_ = true, w_q_ = true;
-  bool tim_one_q_ = false, hold_ok_q_ = false, setup_ok_q_ = false, pulse_ok_q_ = false;
+  bool tim_one_q_ = false, hold_ok_q_ = false, setup_ok_q_ = false;
+  bool ok_pos_q_ = false, ok_neg_q_ = false;
 };
 
 }  // namespace hwinterp::hls

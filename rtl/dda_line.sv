@@ -1,37 +1,48 @@
 // dda_line: N-axis digital differential analyzer line interpolator.
 //
-// command stream -> buffer (|delta|, exponent) -> DDA engine (feed_accum gated) -> step_stage
+// command stream -> buffer A (|delta|) -> buffer B (normalised) -> DDA engine (feed_accum gated) -> step_stage
 //
 // Command: cmd_delta_i holds one signed (two's complement) ACC_W-bit delta in
 // steps per axis, axis i in bits [i*ACC_W +: ACC_W]; it is taken on a clock
-// where cmd_valid_i && cmd_ready_o. A one-entry buffer holds the next command
+// where cmd_valid_i && cmd_ready_o. Two buffer entries hold the next commands
 // while the engine runs, so back-to-back commands run without a gap;
-// cmd_ready_o is a register.
+// cmd_ready_o is a register (buffer A empty).
 //
-// Normalisation: with M = max |delta_i| and n its bit length, the engine adds
-// |delta_i| << (ACC_W - n) to an ACC_W-bit accumulator per axis for 2^n
-// iterations; the carry out is a step. Axis i thus steps
+// Mathematics: with M = max |delta_i| and n its bit length, the engine runs
+// 2^n iterations; axis i has an n-bit accumulator that adds |delta_i| each
+// iteration, and its carry out of bit n-1 is a step. Axis i thus steps
 // floor(k |delta_i| / 2^n + p) times after k iterations (p = 0, or 1/2 with
 // half_preload_i, sampled with the command when it is taken): exactly
 // |delta_i| steps, ending on the end point. models/dda_line_model.h states the
-// same mathematics and the error bounds. The work is split over the two
-// stages a command passes anyway, to keep each clock's path short: taking a
-// command registers the magnitudes and n (negate, OR, priority encode); the
-// engine shifts them as it loads the command.
+// same mathematics and the error bounds.
+//
+// Datapath: the accumulator is ACC_W bits wide with its bits n and up held at
+// one (hm, the command's high mask), so the carry out of bit n-1 runs through
+// them to the adder's carry out: no shifter, and the carry is always the top
+// bit. Each axis keeps s_q = accumulator + |delta_i| one iteration ahead, so
+// this iteration's carry is a register; an iteration adds (s_q | hm) +
+// |delta_i|. Taking a command registers the magnitudes and their OR (buffer
+// A); the next clock derives from the OR the command's masks and the first
+// accumulator value (buffer B: 2^n - 1, hm, hm + 2^(n-1) with half preload);
+// the engine loads buffer B, its first add being that first value plus the
+// magnitudes. A command thus reaches an idle engine two clocks after it is
+// taken, and its first iteration runs on the third.
 //
 // Feed (rtl/feed_accum.sv): each clock a FEED_W-bit phase accumulator adds
 // feed_i; its carry lets the engine do one iteration. feed_i >= 2^FEED_W is
 // full feed (every clock), feed_i = 0 holds the move. The engine stalls, and
 // the feed phase holds, whenever an axis that would step is not ready
 // (step/dir timing, rtl/step_stage.sv): steps are delayed, never dropped.
+// Whether the engine advances depends on registers only (the carries, the
+// stage's readiness, the iteration count) and the feed's tick.
 //
 // Abort: abort_i high at a clock edge ends the running command and drops the
-// buffered one (a command transferred on that same edge too); no iteration
+// buffered ones (a command transferred on that same edge too); no iteration
 // runs on that edge, so no new step starts from it on. A pulse already high
-// keeps its full length: busy_o falls at most max(step_len_i, 1) - 1 clocks
-// after the abort edge, and pos_o then equals the pulses on the wire, a point
-// the command's path visits. No done_o for an aborted command. The core takes
-// commands again from the next clock on.
+// keeps its full length: busy_o falls at most L - 1 clocks after the abort
+// edge (L: that pulse's step_len), and pos_o then equals the pulses on the
+// wire, a point the command's path visits. No done_o for an aborted command.
+// The core takes commands again from the next clock on.
 //
 // Status: busy_o while a command is buffered or running or a pulse is high;
 // done_o pulses for one clock, with the last iteration's steps, per completed
@@ -43,64 +54,75 @@
 // 0.23 (Debian 12) cannot parse multi-dimensional packed arrays, and
 // Icarus 11 cannot bit-select into them with a loop index.
 module dda_line #(
-  parameter int AXES   = 2,
-  parameter int ACC_W  = 32,
-  parameter int POS_W  = 32,
-  parameter int TIM_W  = 16,
-  parameter int FEED_W = 16
+  parameter int AXES   = 2,   // axes
+  parameter int ACC_W  = 32,  // signed delta width, accumulator width
+  parameter int POS_W  = 32,  // position counter width (wraps)
+  parameter int TIM_W  = 16,  // width of the step/dir timing settings
+  parameter int FEED_W = 16   // feed phase width; feed_i is FEED_W + 1 bits
 ) (
   input  logic                   clk_i,
   input  logic                   rst_ni,
   // Command stream
   input  logic                   cmd_valid_i,
   output logic                   cmd_ready_o,
-  input  logic [AXES*ACC_W-1:0]  cmd_delta_i,
+  input  logic [AXES*ACC_W-1:0]  cmd_delta_i,     // signed steps, axis i at [i*ACC_W +: ACC_W]
   // Run-time settings
-  input  logic [FEED_W:0]        feed_i,
-  input  logic                   half_preload_i,
+  input  logic [FEED_W:0]        feed_i,          // iterations per clock = feed_i / 2^FEED_W
+  input  logic                   half_preload_i,  // sampled with each command
   input  logic [TIM_W-1:0]       step_len_i,
   input  logic [TIM_W-1:0]       step_space_i,
   input  logic [TIM_W-1:0]       dir_setup_i,
   input  logic [TIM_W-1:0]       dir_hold_i,
-  input  logic                   abort_i,  // end the move, drop the buffer (one clock)
+  input  logic                   abort_i,         // end the move, drop the buffer (one clock)
   // Step/dir and status
   output logic [AXES-1:0]        step_o,
-  output logic [AXES-1:0]        dir_o,
-  output logic [AXES*POS_W-1:0]  pos_o,
+  output logic [AXES-1:0]        dir_o,           // 1: negative motion
+  output logic [AXES*POS_W-1:0]  pos_o,           // axis i at [i*POS_W +: POS_W]
   output logic                   busy_o,
   output logic                   done_o
 );
-  localparam int ExpW = $clog2(ACC_W + 1);  // holds n in [0, ACC_W]
-  localparam int LeftW = ACC_W + 1;  // holds 2^n
-
   // ---------------------------------------------------------------------------
-  // Command buffer (one entry): taken commands wait here as magnitudes, signs
-  // and the exponent n.
-  logic                  buf_valid_q, buf_valid_d;
-  logic [ExpW-1:0]       buf_exp_q;
-  logic                  buf_half_q;
+  // Buffer A: the taken command as magnitudes, signs and the OR of the
+  // magnitudes (same bit length as their maximum).
+  logic                  a_valid_q, a_valid_d;
+  logic [ACC_W-1:0]      a_any_q;
+  logic                  a_half_q;
   logic                  cmd_take;  // a command is taken this clock
-  logic                  buf_take;  // the engine loads the buffer this clock
+  logic                  a_to_b;  // buffer A moves to buffer B this clock
   logic [AXES*ACC_W-1:0] cmd_mag;  // |delta_i| of the offered command
-  logic [ACC_W-1:0]      cmd_any;  // OR of the magnitudes: same bit length as their max
-  logic [ExpW-1:0]       cmd_exp;
+  logic [ACC_W-1:0]      cmd_any;
 
-  assign cmd_ready_o = !buf_valid_q;
-  assign cmd_take    = cmd_valid_i && !buf_valid_q;
+  assign cmd_ready_o = !a_valid_q;
+  assign cmd_take    = cmd_valid_i && !a_valid_q;
 
   always_comb begin
     cmd_any = '0;
     for (int i = 0; i < AXES; i++) cmd_any = cmd_any | cmd_mag[i*ACC_W +: ACC_W];
-    cmd_exp = '0;
-    for (int b = 0; b < ACC_W; b++) begin
-      if (cmd_any[b]) cmd_exp = ExpW'(b + 1);
-    end
   end
+
+  // ---------------------------------------------------------------------------
+  // Buffer B: the command normalised. low = 2^n - 1 (bits below n: the
+  // iterations to run after the first), hm = ~low, a0 = the first
+  // accumulator value (hm, plus 2^(n-1) with half preload).
+  logic                  b_valid_q, b_valid_d;
+  logic [ACC_W-1:0]      b_low_q, b_hm_q, b_a0_q;
+  logic                  load;  // the engine loads buffer B this clock
+  logic                  pre_load;  // ...if it advances (or is idle): registers only
+  logic [ACC_W-1:0]      a_low, a_top;
+
+  // Suffix OR: a_low[b] = |a_any_q[ACC_W-1:b], the bits below n.
+  always_comb begin
+    a_low[ACC_W-1] = a_any_q[ACC_W-1];
+    for (int b = ACC_W - 2; b >= 0; b--) a_low[b] = a_low[b+1] | a_any_q[b];
+  end
+  assign a_top = a_low ^ (a_low >> 1);  // bit n-1 alone (0 when n = 0)
 
   // ---------------------------------------------------------------------------
   // Engine: iteration count, feed and the per-axis slices below.
   logic                  act_q, act_d;  // a command is running
-  logic [LeftW-1:0]      left_q, left_d;  // iterations still to do
+  logic [ACC_W-1:0]      left_q, left_d;  // iterations still to do after this one
+  logic                  left_zero_q, left_zero_d;  // left_q == 0: this iteration is the last
+  logic [ACC_W-1:0]      hm_q;
   logic                  done_q;
   logic [AXES-1:0]       carry;  // this iteration steps the axis
   logic [AXES-1:0]       moves;  // the running command moves the axis at all
@@ -108,10 +130,15 @@ module dda_line #(
   logic [AXES-1:0]       ready;  // the axis may start a pulse on the next clock
   logic                  tick, stall, advance, last;
 
+  // The adders' operands select on pre_load, not load, and every next state
+  // below is a choice by advance between two values computed from registers:
+  // the clock's late signal enters each register at its last gate.
+  assign pre_load = b_valid_q && (!act_q || left_zero_q);
   assign stall    = |(carry & ~ready);
   assign advance  = tick && !stall && !abort_i;
-  assign last     = advance && (left_q == LeftW'(1));
-  assign buf_take = buf_valid_q && (!act_q || last) && !abort_i;
+  assign last     = advance && left_zero_q;
+  assign load     = pre_load && (!act_q || advance) && !abort_i;
+  assign a_to_b   = a_valid_q && (!b_valid_q || load) && !abort_i;
 
   feed_accum #(
     .FEED_W(FEED_W)
@@ -124,84 +151,115 @@ module dda_line #(
     .tick_o(tick)
   );
 
+  // Without an advance only an idle engine loads.
+  logic idle_load;
+  assign idle_load = pre_load && !act_q && !abort_i;
   always_comb begin
-    act_d  = act_q;
-    left_d = left_q;
     if (advance) begin
-      left_d = left_q - LeftW'(1);
-      if (last) act_d = 1'b0;
+      act_d       = pre_load || !left_zero_q;
+      left_d      = pre_load ? b_low_q : left_q - ACC_W'(1);
+      left_zero_d = pre_load ? (b_low_q == '0) : (left_q == ACC_W'(1));
+    end else begin
+      act_d       = (act_q && !abort_i) || idle_load;
+      left_d      = idle_load ? b_low_q : left_q;
+      left_zero_d = idle_load ? (b_low_q == '0) : left_zero_q;
     end
-    if (buf_take) begin
-      act_d  = 1'b1;
-      left_d = LeftW'(1) << buf_exp_q;
-    end
-    if (abort_i) act_d = 1'b0;
-    buf_valid_d = !abort_i && (cmd_take || (buf_valid_q && !buf_take));
+    a_valid_d = !abort_i && (cmd_take || (a_valid_q && !a_to_b));
+    b_valid_d = !abort_i && (a_to_b || (b_valid_q && !load));
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      buf_valid_q <= 1'b0;
-      buf_exp_q   <= '0;
-      buf_half_q  <= 1'b0;
+      a_valid_q   <= 1'b0;
+      a_any_q     <= '0;
+      a_half_q    <= 1'b0;
+      b_valid_q   <= 1'b0;
+      b_low_q     <= '0;
+      b_hm_q      <= '0;
+      b_a0_q      <= '0;
       act_q       <= 1'b0;
       left_q      <= '0;
+      left_zero_q <= 1'b0;
+      hm_q        <= '0;
       done_q      <= 1'b0;
     end else begin
-      buf_valid_q <= buf_valid_d;
+      a_valid_q <= a_valid_d;
       if (cmd_take) begin
-        buf_exp_q  <= cmd_exp;
-        buf_half_q <= half_preload_i;
+        a_any_q  <= cmd_any;
+        a_half_q <= half_preload_i;
       end
-      act_q  <= act_d;
-      left_q <= left_d;
+      b_valid_q <= b_valid_d;
+      if (a_to_b) begin
+        b_low_q <= a_low;
+        b_hm_q  <= ~a_low;
+        b_a0_q  <= ~a_low | (a_half_q ? a_top : '0);
+      end
+      act_q       <= act_d;
+      left_q      <= left_d;
+      left_zero_q <= left_zero_d;
+      if (load) hm_q <= b_hm_q;
       done_q <= last;
     end
   end
 
   // ---------------------------------------------------------------------------
-  // Per-axis slices: magnitude of the offered delta, its buffer entry and the
-  // accumulator.
+  // Per-axis slices: the offered magnitude, buffers A and B, the engine's
+  // increment and lookahead sum (carry = s_q[ACC_W]).
   for (genvar i = 0; i < AXES; i++) begin : g_axis
     logic [ACC_W-1:0] delta;
     logic             cmd_neg;
-    logic [ACC_W-1:0] buf_mag_q;
-    logic             buf_neg_q;
-    logic [ACC_W-1:0] acc_q, acc_d;
-    logic [ACC_W-1:0] inc_q;
-    logic             neg_q;
-    logic [ACC_W:0]   sum;
+    logic [ACC_W-1:0] a_mag_q, b_mag_q, mag_q;
+    logic             a_neg_q, b_neg_q, neg_q;
+    logic             a_moves_q, b_moves_q, moves_q;
+    logic [ACC_W:0]   s_q;
+    logic [ACC_W-1:0] x, y;
 
     assign delta   = cmd_delta_i[i*ACC_W +: ACC_W];
     assign cmd_neg = delta[ACC_W-1];
-    assign cmd_mag[i*ACC_W +: ACC_W] = cmd_neg ? ACC_W'(-delta) : delta;
+    // |delta| = (delta - 1) ^ all ones for a negative delta: one adder whose
+    // sum bits take the XOR (Yosys maps cmd_neg ? -delta : delta to an adder,
+    // an XOR and a mux per bit: 93 LUT4 against 32 at ACC_W = 32).
+    assign cmd_mag[i*ACC_W +: ACC_W] = (delta + {ACC_W{cmd_neg}}) ^ {ACC_W{cmd_neg}};
 
-    assign sum      = {1'b0, acc_q} + {1'b0, inc_q};
-    assign carry[i] = sum[ACC_W];
-    assign moves[i] = act_q && (inc_q != '0);
+    // One adder: the first value plus the magnitude on a load, else the next
+    // iteration (s_q is written only on a load or an advance, and then
+    // pre_load == load).
+    assign x        = pre_load ? b_a0_q : (s_q[ACC_W-1:0] | hm_q);
+    assign y        = pre_load ? b_mag_q : mag_q;
+    assign carry[i] = s_q[ACC_W];
+    assign moves[i] = moves_q;
     assign neg[i]   = neg_q;
-    // A new command restarts the accumulator at 0 or one half.
-    assign acc_d = buf_take ? (buf_half_q ? {1'b1, {(ACC_W - 1) {1'b0}}} : '0) :
-                   advance  ? sum[ACC_W-1:0] : acc_q;
 
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
-        buf_mag_q <= '0;
-        buf_neg_q <= 1'b0;
-        acc_q     <= '0;
-        inc_q     <= '0;
+        a_mag_q   <= '0;
+        a_neg_q   <= 1'b0;
+        a_moves_q <= 1'b0;
+        b_mag_q   <= '0;
+        b_neg_q   <= 1'b0;
+        b_moves_q <= 1'b0;
+        mag_q     <= '0;
         neg_q     <= 1'b0;
+        moves_q   <= 1'b0;
+        s_q       <= '0;
       end else begin
         if (cmd_take) begin
-          buf_mag_q <= cmd_mag[i*ACC_W +: ACC_W];
-          buf_neg_q <= cmd_neg;
+          a_mag_q   <= cmd_mag[i*ACC_W +: ACC_W];
+          a_neg_q   <= cmd_neg;
+          a_moves_q <= (delta != '0);
         end
-        if (buf_take) begin
-          // |delta| << (ACC_W - n); n = 0 only for an all-zero command.
-          inc_q <= buf_mag_q << (ExpW'(ACC_W) - buf_exp_q);
-          neg_q <= buf_neg_q;
+        if (a_to_b) begin
+          b_mag_q   <= a_mag_q;
+          b_neg_q   <= a_neg_q;
+          b_moves_q <= a_moves_q;
         end
-        acc_q <= acc_d;
+        if (load) begin
+          mag_q <= b_mag_q;
+          neg_q <= b_neg_q;
+        end
+        if (load) moves_q <= b_moves_q;
+        else if (last || abort_i) moves_q <= 1'b0;
+        if (load || advance) s_q <= {1'b0, x} + {1'b0, y};
       end
     end
   end
@@ -228,6 +286,6 @@ module dda_line #(
     .pos_o
   );
 
-  assign busy_o = act_q || buf_valid_q || (|step_o);
+  assign busy_o = act_q || a_valid_q || b_valid_q || (|step_o);
   assign done_o = done_q;
 endmodule

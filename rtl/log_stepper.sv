@@ -243,7 +243,7 @@ module log_stepper #(
   logic [4*SEG_W-1:0]      seg_q, seg_d;
   logic                    seg_valid_q, seg_valid_d, seg_last_q, seg_last_d;
   logic [1:0]              tag_n_q, tag_n_d;
-  logic [1:0]              tag_q, tag_d;
+  logic [2:0]              tag_q, tag_d;  // at most three: dda_line's two buffer entries and its engine
   logic                    emit_last;
   logic                    cmd_take;
 
@@ -403,20 +403,25 @@ module log_stepper #(
   end
 
   // Tags: does the segment end its curve; oldest (tag_q[0]) first.
-  logic [1:0] n, t;
+  logic [1:0] n;
+  logic [2:0] t;
   always_comb begin
     n = tag_n_q;
     t = tag_q;
     if (fine_done) begin
-      t = {1'b0, t[1]};
+      t = {1'b0, t[2:1]};
       n = n - 2'd1;
     end
     if (seg_valid_q && fine_ready) begin
-      t[n[0]] = seg_last_q;
+      case (n)
+        2'd0: t[0] = seg_last_q;
+        2'd1: t[1] = seg_last_q;
+        default: t[2] = seg_last_q;
+      endcase
       n = n + 2'd1;
     end
     tag_n_d = abort_i ? 2'd0 : n;
-    tag_d   = abort_i ? 2'b00 : t;
+    tag_d   = abort_i ? 3'b000 : t;
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin

@@ -29,7 +29,7 @@ module step_stage #(
   input  logic [AXES-1:0]       want_valid_i,  // the running command moves the axis
   input  logic [AXES-1:0]       want_dir_i,    // ...in this direction (1: negative)
   input  logic [AXES-1:0]       fire_i,        // start a pulse next clock (ready axes only)
-  output logic [AXES-1:0]       ready_o,       // a pulse may start on the next clock
+  output logic [AXES-1:0]       ready_o,       // a pulse in direction want_dir_i may start next clock
   output logic [AXES-1:0]       step_o,
   output logic [AXES-1:0]       dir_o,         // 1: negative motion
   output logic [AXES*POS_W-1:0] pos_o          // axis i in bits [i*POS_W +: POS_W]
@@ -65,7 +65,8 @@ module step_stage #(
 
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) pos_q <= '0;
-      else if (fire_i[i]) pos_q <= want_dir_i[i] ? pos_q - POS_W'(1) : pos_q + POS_W'(1);
+      // One adder: +1, or + all ones (-1) for the negative direction.
+      else if (fire_i[i]) pos_q <= pos_q + {{(POS_W - 1) {want_dir_i[i]}}, 1'b1};
     end
     assign pos_o[i*POS_W +: POS_W] = pos_q;
 

@@ -25,11 +25,15 @@
 // (no core runs a command on it).
 // dir_o = 0 means positive motion, 1 negative (the sign bit of the delta).
 //
-// Timing: ready_o is an AND of registers and the engine's want_*; every
-// compare a clock needs is decided a clock ahead into a flag register
-// (tim_one_q, hold_ok_q, setup_ok_q, pulse_ok_q), and the counters count
-// down to 1 (no compare against a setting). The settings arrive prepared
-// once for all axes by rtl/stepdir_timing.sv.
+// ready_o answers for a pulse in the direction want_dir_i, whether or not
+// want_valid_i asks for one (the engine fires only axes its command moves).
+//
+// Timing: ready_o is a register selected by want_dir_i; every compare a
+// clock needs is decided a clock ahead into a flag register (tim_one_q,
+// hold_ok_q, setup_ok_q, ok_pos_q/ok_neg_q), and the counters count down to
+// 1 (no compare against a setting). fire_i, the engine's late signal, enters
+// the next state only at its last gate. The settings arrive prepared once for
+// all axes by rtl/stepdir_timing.sv.
 module stepdir_axis #(
   parameter int TIM_W = 16  // width of the settings and counters (>= 2)
 ) (
@@ -76,7 +80,8 @@ module stepdir_axis #(
   logic             tim_one_q, tim_one_d;  // tim (without v) <= 1: last high cycle / space done
   logic             hold_ok_q, hold_ok_d;  // step_o low and the hold done: dir_o may turn
   logic             setup_ok_q, setup_ok_d;  // the setup done
-  logic             pulse_ok_q, pulse_ok_d;  // step_o low, space and setup done
+  logic             ok_pos_q, ok_pos_d;  // step_o low, space and setup done, dir_o = 0
+  logic             ok_neg_q, ok_neg_d;  // the same with dir_o = 1
 
   // c - off <= 2 for a counter c with offset off (0 or 1).
   function automatic logic le2_off(input logic [TIM_W-1:0] c, input logic off);
@@ -85,47 +90,47 @@ module stepdir_axis #(
 
   logic turn;
   assign turn    = hold_ok_q && want_valid_i && (want_dir_i != dir_q);
-  assign ready_o = pulse_ok_q && want_valid_i && (want_dir_i == dir_q);
+  assign ready_o = want_dir_i ? ok_neg_q : ok_pos_q;
 
+  // The next state in two parts: what it would be without a pulse starting
+  // (the _nf values, from registers and want_* only), and fire_i, the
+  // engine's late signal, choosing at the end.
+  logic             step_nf, v_nf, tim_one_nf, hold_ok_nf, pulse_nf;
+  logic [TIM_W-1:0] tim_nf;
   always_comb begin
-    step_d    = step_q;
-    tim_d     = tim_q;
-    hold_d    = hold_q;
-    v_d       = v_q;
-    tim_one_d = tim_one_q;
-    hold_ok_d = hold_ok_q;
+    step_nf    = step_q;
+    tim_nf     = tim_q;
+    hold_d     = hold_q;
+    v_nf       = v_q;
+    tim_one_nf = tim_one_q;
+    hold_ok_nf = hold_ok_q;
     if (fresh_i) begin
       // The reset ended a pulse one clock ago.
-      tim_d     = space_i;
-      hold_d    = hold_i;
-      tim_one_d = space_two_i;
-      hold_ok_d = hold_two_i;
+      tim_nf     = space_i;
+      hold_d     = hold_i;
+      tim_one_nf = space_two_i;
+      hold_ok_nf = hold_two_i;
     end else if (step_q) begin
       if (tim_one_q) begin
-        step_d    = 1'b0;
-        tim_d     = space_i;
-        hold_d    = hold_i;
-        v_d       = 1'b0;
-        tim_one_d = space_one_i;
-        hold_ok_d = hold_one_i;
+        step_nf    = 1'b0;
+        tim_nf     = space_i;
+        hold_d     = hold_i;
+        v_nf       = 1'b0;
+        tim_one_nf = space_one_i;
+        hold_ok_nf = hold_one_i;
       end else begin
-        tim_d     = tim_q - One;
-        tim_one_d = le2_off(tim_q, 1'b0);
+        tim_nf     = tim_q - One;
+        tim_one_nf = le2_off(tim_q, 1'b0);
       end
-    end else if (fire_i) begin
-      step_d    = 1'b1;
-      tim_d     = len_i;
-      v_d       = 1'b0;
-      tim_one_d = len_one_i;
-      hold_ok_d = 1'b0;
     end else begin
       if (!tim_one_q) begin
-        tim_d     = tim_q - One;
-        tim_one_d = le2_off(tim_q, v_q);
+        tim_nf     = tim_q - One;
+        tim_one_nf = le2_off(tim_q, v_q);
       end
+      // (A pulse starting now leaves the hold count to the fall, which reloads it.)
       if (!hold_ok_q) begin
-        hold_d    = hold_q - One;
-        hold_ok_d = le2_off(hold_q, v_q);
+        hold_d     = hold_q - One;
+        hold_ok_nf = le2_off(hold_q, v_q);
       end
     end
 
@@ -145,9 +150,17 @@ module stepdir_axis #(
       setup_d    = setup_q - One;
       setup_ok_d = le2_off(setup_q, w_q);
     end
-
-    pulse_ok_d = !step_d && tim_one_d && setup_ok_d;
+    pulse_nf = !step_nf && tim_one_nf && setup_ok_d;
   end
+
+  // fire_i only ever comes with step_q low (a ready axis).
+  assign step_d    = step_nf || fire_i;
+  assign tim_d     = fire_i ? len_i : tim_nf;
+  assign v_d       = v_nf && !fire_i;
+  assign tim_one_d = fire_i ? len_one_i : tim_one_nf;
+  assign hold_ok_d = hold_ok_nf && !fire_i;
+  assign ok_pos_d  = pulse_nf && !fire_i && !dir_d;
+  assign ok_neg_d  = pulse_nf && !fire_i && dir_d;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -161,7 +174,8 @@ module stepdir_axis #(
       tim_one_q  <= 1'b0;
       hold_ok_q  <= 1'b0;
       setup_ok_q <= 1'b0;
-      pulse_ok_q <= 1'b0;
+      ok_pos_q   <= 1'b0;
+      ok_neg_q   <= 1'b0;
     end else begin
       step_q     <= step_d;
       dir_q      <= dir_d;
@@ -173,7 +187,8 @@ module stepdir_axis #(
       tim_one_q  <= tim_one_d;
       hold_ok_q  <= hold_ok_d;
       setup_ok_q <= setup_ok_d;
-      pulse_ok_q <= pulse_ok_d;
+      ok_pos_q   <= ok_pos_d;
+      ok_neg_q   <= ok_neg_d;
     end
   end
 

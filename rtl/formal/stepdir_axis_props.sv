@@ -16,9 +16,10 @@
 //   a_hold    dir_o changes only after step_o has been low for at least H cycles;
 //   a_setup   step_o rises only after dir_o has held its value for at least U cycles;
 //   a_fire    a fire_i always starts a pulse on the next clock (no step lost);
-//   a_ready   ready_o is exactly "a pulse may start now": want_valid_i, dir_o
-//             already equal to want_dir_i, step_o low for at least S cycles
-//             and dir_o held for at least U cycles (never late, never early);
+//   a_ready   ready_o is exactly "a pulse in direction want_dir_i may start
+//             now": dir_o already equal to want_dir_i, step_o low for at
+//             least S cycles and dir_o held for at least U cycles (never late,
+//             never early; want_valid_i is the engine's business);
 //   a_turn    dir_o turns to want_dir_i on the clock after step_o has been low
 //             for at least H cycles while want_valid_i asks for the other way.
 // Reset counts as the end of a pulse and a change of dir, with the settings
@@ -132,8 +133,7 @@ module stepdir_axis_props #(
 
   logic first;  // the first cycle after reset
   logic legal, turn;  // a pulse may start; dir_o may turn
-  assign legal = !first && want_valid_i && (want_dir_i == dir) && !step && (lo >= c_space) &&
-                 (dage >= c_setup);
+  assign legal = !first && (want_dir_i == dir) && !step && (lo >= c_space) && (dage >= c_setup);
   assign turn  = !first && want_valid_i && (want_dir_i != dir) && !step && (lo >= c_hold);
 
   always_ff @(posedge clk_i or negedge rst_ni) begin

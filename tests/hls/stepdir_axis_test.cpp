@@ -27,7 +27,7 @@ Trace run(StepdirSettings<16> s, int cycles, Want want) {
     const bool w = want(c);
     const StepdirPrepared<16> p = timing.prepare(s);
     timing.clock();
-    a.tick(p, true, w, a.ready(true, w));
+    a.tick(p, true, w, a.ready(w));
     t.step.push_back(a.step());
     t.dir.push_back(a.dir());
   }
