@@ -290,6 +290,8 @@ bool NgcReader::execute(const Block& b, Move& m) {
     fail(word_of('P') + " without G2, G3, G4 or G64 to use it");
   if (b.q && b.path_control.code != 640) fail(word_of('Q') + " without G64 to use it");
   if (b.nonmodal.code == 40 && !b.p) fail("G4 without P (the dwell time)");
+  if (b.nonmodal.code == 40 && (b.motion.code == 20 || b.motion.code == 30))
+    fail("G4 beside '" + b.motion.word + "' (both would use P)");
 
   // LinuxCNC's order of execution.
   if (b.n) ++stats_.words["N"];

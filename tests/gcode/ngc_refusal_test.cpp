@@ -98,6 +98,7 @@ TEST(NgcRefusal, WhatLinuxCncRefusesOnALine) {
       {"G1 X1 P2 F100\n", {"t.ngc:1:", "'P2' without G2, G3, G4 or G64"}},
       {"G61 Q1\n", {"t.ngc:1:", "'Q1' without G64"}},
       {"G4\n", {"t.ngc:1:", "G4 without P"}},
+      {"G4 P1 G2 X2 I1 F100\n", {"t.ngc:1:", "G4 beside 'G2'"}},
       {"G1 X1\n", {"t.ngc:1:", "G1 with a zero feed rate"}},
       {"G1 X1 F0\n", {"t.ngc:1:", "G1 with a zero feed rate"}},
       {"G2 X2 I1\n", {"t.ngc:1:", "arc with a zero feed rate"}},
