@@ -1,0 +1,170 @@
+#include "tb/gcode/machine.h"
+
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <set>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "tb/cli/cli_args.h"
+#include "tb/gcode/line_source.h"
+
+namespace hwinterp::gcode {
+
+namespace {
+
+using nlohmann::json;
+
+constexpr size_t kMaxFileBytes = 1 << 20;
+constexpr int kMaxDepth = 8;
+
+class Reader {
+ public:
+  explicit Reader(const std::string& name) : name_(name) {}
+
+  [[noreturn]] void fail(const std::string& key, const json& value, const std::string& why) const {
+    throw cli::UsageError(name_ + ": " + key + " = " + excerpt(value.dump(), 40) + ": " + why);
+  }
+
+  int64_t integer(const std::string& key, const json& v, int64_t lo, int64_t hi) const {
+    const std::string range = "outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    if (!v.is_number()) fail(key, v, "not a number");
+    if (v.is_number_float()) {
+      const double d = v.get<double>();
+      if (std::floor(d) != d) fail(key, v, "not an integer");
+      if (d < static_cast<double>(lo) || d > static_cast<double>(hi)) fail(key, v, range);
+      return static_cast<int64_t>(d);
+    }
+    if (v.is_number_unsigned()) {
+      const uint64_t u = v.get<uint64_t>();
+      if (u > static_cast<uint64_t>(hi) || static_cast<int64_t>(u) < lo) fail(key, v, range);
+      return static_cast<int64_t>(u);
+    }
+    const int64_t n = v.get<int64_t>();
+    if (n < lo || n > hi) fail(key, v, range);
+    return n;
+  }
+
+  double positive(const std::string& key, const json& v, double hi) const {
+    if (!v.is_number()) fail(key, v, "not a number");
+    const double d = v.get<double>();
+    if (!(d > 0 && d <= hi)) fail(key, v, "outside (0, " + json(hi).dump() + "]");
+    return d;
+  }
+
+  int axis(const std::string& key, const std::string& letter, const json& shown) const {
+    const std::string names = kAxisNames;
+    if (letter.size() != 1 || names.find(letter[0]) == std::string::npos)
+      fail(key, shown, "not an axis (one of X Y Z A B C)");
+    return static_cast<int>(names.find(letter[0]));
+  }
+
+ private:
+  std::string name_;
+};
+
+// Parses, refusing repeated keys and deep nesting (the callback sees every
+// key before its value).
+json parse(const std::string& text, const std::string& name) {
+  std::vector<std::set<std::string>> keys;
+  const json::parser_callback_t check = [&](int depth, json::parse_event_t event, json& parsed) {
+    if (depth > kMaxDepth)
+      throw cli::UsageError(name + ": nested deeper than " + std::to_string(kMaxDepth) + " levels");
+    if (event == json::parse_event_t::object_start) keys.emplace_back();
+    if (event == json::parse_event_t::object_end && !keys.empty()) keys.pop_back();
+    if (event == json::parse_event_t::key && !keys.empty()) {
+      const std::string k = parsed.get<std::string>();
+      if (!keys.back().insert(k).second)
+        throw cli::UsageError(name + ": key '" + excerpt(k, 40) + "' given twice");
+    }
+    return true;
+  };
+  try {
+    return json::parse(text, check);
+  } catch (const json::exception& e) {
+    throw cli::UsageError(name + ": not a JSON machine description: " + e.what());
+  }
+}
+
+}  // namespace
+
+std::string Machine::axes() const {
+  std::string s;
+  for (int a = 0; a < kAxes; ++a)
+    if (has_axis[a]) s += kAxisNames[a];
+  return s;
+}
+
+Machine read_machine(std::istream& in, const std::string& name) {
+  std::string text;
+  char buf[4096];
+  while (in.read(buf, sizeof buf) || in.gcount() > 0) {
+    text.append(buf, static_cast<size_t>(in.gcount()));
+    if (text.size() > kMaxFileBytes)
+      throw cli::UsageError(name + ": larger than " + std::to_string(kMaxFileBytes) + " bytes");
+  }
+  const json doc = parse(text, name);
+  const Reader r(name);
+  if (!doc.is_object()) r.fail("the file", doc, "not a JSON object");
+
+  Machine m;
+  // The axes first: steps_per_unit may only name axes the machine has.
+  if (const auto it = doc.find("axes"); it != doc.end()) {
+    if (!it->is_array() || it->empty()) r.fail("axes", *it, "not a non-empty list of axis names");
+    m.has_axis.fill(false);
+    for (const json& a : *it) {
+      if (!a.is_string()) r.fail("axes", a, "not an axis name (\"X\" ... \"C\")");
+      const int i = r.axis("axes", a.get<std::string>(), a);
+      if (m.has_axis[i]) r.fail("axes", a, "listed twice");
+      m.has_axis[i] = true;
+    }
+  }
+  for (const auto& [key, value] : doc.items()) {
+    if (key == "comment") {
+      if (!value.is_string()) r.fail(key, value, "not a string");
+    } else if (key == "axes") {
+      // read above
+    } else if (key == "steps_per_unit") {
+      if (!value.is_object()) r.fail(key, value, "not an object {\"X\": steps, ...}");
+      for (const auto& [axis, steps] : value.items()) {
+        const std::string k = "steps_per_unit." + axis;
+        const int i = r.axis(k, axis, steps);
+        if (!m.has_axis[i])
+          r.fail(k, steps, "the machine has no " + axis + " axis (axes " + m.axes() + ")");
+        m.steps_per_unit[i] = r.integer(k, steps, 1, 10'000'000);
+      }
+    } else if (key == "clock_hz") {
+      m.clock_hz = r.integer(key, value, 1, 10'000'000'000);
+    } else if (key == "rapid_mm_per_min") {
+      m.rapid_mm_per_min = r.positive(key, value, 1e7);
+    } else if (key == "timing_clocks") {
+      if (!value.is_object()) r.fail(key, value, "not an object {\"step_len\": clocks, ...}");
+      for (const auto& [field, clocks] : value.items()) {
+        const std::string k = "timing_clocks." + field;
+        int64_t* slot = field == "step_len"     ? &m.timing.step_len
+                        : field == "step_space" ? &m.timing.step_space
+                        : field == "dir_setup"  ? &m.timing.dir_setup
+                        : field == "dir_hold"   ? &m.timing.dir_hold
+                                                : nullptr;
+        if (slot == nullptr)
+          r.fail(k, clocks, "unknown key (step_len, step_space, dir_setup, dir_hold)");
+        *slot = r.integer(k, clocks, 1, 65535);
+      }
+    } else {
+      r.fail(key, value,
+             "unknown key (comment, axes, steps_per_unit, clock_hz, rapid_mm_per_min, "
+             "timing_clocks)");
+    }
+  }
+  return m;
+}
+
+Machine load_machine(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw cli::UsageError("--machine: cannot open '" + path + "'");
+  return read_machine(in, path);
+}
+
+}  // namespace hwinterp::gcode
