@@ -89,11 +89,11 @@ class DdaLine {
       want.want_dir[i] = neg_q_[i];
       if (carry[i] && !out_.ready(i, want)) stall = true;
     }
-    const bool tick = feed_.tick(in.feed, act_q_);
+    const bool tick = feed_.tick(act_q_);
     const bool advance = tick && !stall && !in.abort;
     const bool last = advance && left_zero_q_;
     const bool load = b_valid_q_ && (!act_q_ || last) && !in.abort;
-    const bool a_to_b = a_valid_q_ && (!b_valid_q_ || load) && !in.abort;
+    const bool a_to_b = a_valid_q_ && !b_valid_q_ && !in.abort;
     const bool cmd_take = in.cmd_valid && !a_valid_q_;
 
     // Output stage and feed first: they read the engine registers before they update.

@@ -99,7 +99,7 @@ class FixedRatio {
       want.want_dir[i] = neg_q_[i];
       if (must[i] && !out_.ready(i, want)) stall = true;
     }
-    const bool tick = feed_.tick(in.feed, act_q_);
+    const bool tick = feed_.tick(act_q_);
     const bool advance = tick && !stall && !in.abort;
     const bool last = advance && all_fin;
     const bool div_run = buf_valid_q_ && div_left_q_ != 0;

@@ -125,7 +125,7 @@ class PpcArc {
       want.want_dir[i] = line_q_ ? lneg_q_[i] : mneg_q_[i];
       if (carry[i] && !out_.ready(i, want)) stall = true;
     }
-    const bool tick = feed_.tick(in.feed, act_q_);
+    const bool tick = feed_.tick(act_q_);
     const bool advance = tick && !stall && !in.abort;
     const bool line_load = advance && act_q_ && (sw_q_ || (arc && arc_switch));
     const bool last = advance && ((arc && arc_last) || (act_q_ && line_q_ && line_.last()));

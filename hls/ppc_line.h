@@ -77,7 +77,7 @@ class PpcLine {
       want.want_dir[i] = neg_q_[i];
       if (carry[i] && !out_.ready(i, want)) stall = true;
     }
-    const bool tick = feed_.tick(in.feed, act_q_);
+    const bool tick = feed_.tick(act_q_);
     const bool advance = tick && !stall && !in.abort;
     const bool last = advance && line_.last();
     const bool buf_take = buf_valid_q_ && (!act_q_ || last) && !in.abort;

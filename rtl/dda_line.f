@@ -2,4 +2,5 @@ stepdir_timing.sv
 stepdir_axis.sv
 step_stage.sv
 feed_accum.sv
+magnitude.sv
 dda_line.sv

@@ -107,13 +107,14 @@ module dda_line #(
   logic                  b_valid_q, b_valid_d;
   logic [ACC_W-1:0]      b_low_q, b_hm_q, b_a0_q;
   logic                  load;  // the engine loads buffer B this clock
-  logic                  pre_load;  // ...if it advances (or is idle): registers only
+  logic                  pre_load_q, pre_load_d;  // ...if it advances (or is idle): a register
   logic [ACC_W-1:0]      a_low, a_top;
 
-  // Suffix OR: a_low[b] = |a_any_q[ACC_W-1:b], the bits below n.
+  // Suffix OR, a_low[b] = |a_any_q[ACC_W-1:b]: the bits below n. Written as
+  // a log-depth prefix network (a chain of ORs maps to ten LUT levels).
   always_comb begin
-    a_low[ACC_W-1] = a_any_q[ACC_W-1];
-    for (int b = ACC_W - 2; b >= 0; b--) a_low[b] = a_low[b+1] | a_any_q[b];
+    a_low = a_any_q;
+    for (int sh = 1; sh < ACC_W; sh = sh * 2) a_low = a_low | (a_low >> sh);
   end
   assign a_top = a_low ^ (a_low >> 1);  // bit n-1 alone (0 when n = 0)
 
@@ -130,15 +131,19 @@ module dda_line #(
   logic [AXES-1:0]       ready;  // the axis may start a pulse on the next clock
   logic                  tick, stall, advance, last;
 
-  // The adders' operands select on pre_load, not load, and every next state
+  // The adders' operands select on pre_load_q, not load, and every next state
   // below is a choice by advance between two values computed from registers:
   // the clock's late signal enters each register at its last gate.
-  assign pre_load = b_valid_q && (!act_q || left_zero_q);
-  assign stall    = |(carry & ~ready);
-  assign advance  = tick && !stall && !abort_i;
-  assign last     = advance && left_zero_q;
-  assign load     = pre_load && (!act_q || advance) && !abort_i;
-  assign a_to_b   = a_valid_q && (!b_valid_q || load) && !abort_i;
+  // pre_load_q == b_valid_q && (!act_q || left_zero_q), kept as a register.
+  // Buffer A moves on only into an empty buffer B, so neither depends on the
+  // clock's advance; a command still reaches B a clock before the engine can
+  // load it again (2^n >= 1 iterations, and cmd_ready_o lets in one command
+  // per two clocks at most).
+  assign stall   = |(carry & ~ready);
+  assign advance = tick && !stall && !abort_i;
+  assign last    = advance && left_zero_q;
+  assign load    = pre_load_q && (!act_q || advance) && !abort_i;
+  assign a_to_b  = a_valid_q && !b_valid_q && !abort_i;
 
   feed_accum #(
     .FEED_W(FEED_W)
@@ -146,26 +151,28 @@ module dda_line #(
     .clk_i,
     .rst_ni,
     .feed_i,
-    .run_i (act_q),
-    .hold_i(stall),
-    .tick_o(tick)
+    .run_i     (act_q),
+    .hold_i    (stall),
+    .run_next_i(act_d),
+    .tick_o    (tick)
   );
 
   // Without an advance only an idle engine loads.
   logic idle_load;
-  assign idle_load = pre_load && !act_q && !abort_i;
+  assign idle_load = pre_load_q && !act_q && !abort_i;
   always_comb begin
     if (advance) begin
-      act_d       = pre_load || !left_zero_q;
-      left_d      = pre_load ? b_low_q : left_q - ACC_W'(1);
-      left_zero_d = pre_load ? (b_low_q == '0) : (left_q == ACC_W'(1));
+      act_d       = pre_load_q || !left_zero_q;
+      left_d      = pre_load_q ? b_low_q : left_q - ACC_W'(1);
+      left_zero_d = pre_load_q ? (b_low_q == '0) : (left_q == ACC_W'(1));
     end else begin
       act_d       = (act_q && !abort_i) || idle_load;
       left_d      = idle_load ? b_low_q : left_q;
       left_zero_d = idle_load ? (b_low_q == '0) : left_zero_q;
     end
-    a_valid_d = !abort_i && (cmd_take || (a_valid_q && !a_to_b));
-    b_valid_d = !abort_i && (a_to_b || (b_valid_q && !load));
+    a_valid_d  = !abort_i && (cmd_take || (a_valid_q && !a_to_b));
+    b_valid_d  = !abort_i && (a_to_b || (b_valid_q && !load));
+    pre_load_d = b_valid_d && (!act_d || left_zero_d);
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -174,6 +181,7 @@ module dda_line #(
       a_any_q     <= '0;
       a_half_q    <= 1'b0;
       b_valid_q   <= 1'b0;
+      pre_load_q  <= 1'b0;
       b_low_q     <= '0;
       b_hm_q      <= '0;
       b_a0_q      <= '0;
@@ -188,7 +196,8 @@ module dda_line #(
         a_any_q  <= cmd_any;
         a_half_q <= half_preload_i;
       end
-      b_valid_q <= b_valid_d;
+      b_valid_q  <= b_valid_d;
+      pre_load_q <= pre_load_d;
       if (a_to_b) begin
         b_low_q <= a_low;
         b_hm_q  <= ~a_low;
@@ -214,18 +223,20 @@ module dda_line #(
     logic [ACC_W:0]   s_q;
     logic [ACC_W-1:0] x, y;
 
-    assign delta   = cmd_delta_i[i*ACC_W +: ACC_W];
-    assign cmd_neg = delta[ACC_W-1];
-    // |delta| = (delta - 1) ^ all ones for a negative delta: one adder whose
-    // sum bits take the XOR (Yosys maps cmd_neg ? -delta : delta to an adder,
-    // an XOR and a mux per bit: 93 LUT4 against 32 at ACC_W = 32).
-    assign cmd_mag[i*ACC_W +: ACC_W] = (delta + {ACC_W{cmd_neg}}) ^ {ACC_W{cmd_neg}};
+    assign delta = cmd_delta_i[i*ACC_W +: ACC_W];
+    magnitude #(
+      .W(ACC_W)
+    ) u_mag (
+      .x_i  (delta),
+      .mag_o(cmd_mag[i*ACC_W +: ACC_W]),
+      .neg_o(cmd_neg)
+    );
 
     // One adder: the first value plus the magnitude on a load, else the next
     // iteration (s_q is written only on a load or an advance, and then
-    // pre_load == load).
-    assign x        = pre_load ? b_a0_q : (s_q[ACC_W-1:0] | hm_q);
-    assign y        = pre_load ? b_mag_q : mag_q;
+    // pre_load_q == load).
+    assign x        = pre_load_q ? b_a0_q : (s_q[ACC_W-1:0] | hm_q);
+    assign y        = pre_load_q ? b_mag_q : mag_q;
     assign carry[i] = s_q[ACC_W];
     assign moves[i] = moves_q;
     assign neg[i]   = neg_q;

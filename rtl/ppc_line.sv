@@ -99,9 +99,10 @@ module ppc_line #(
     .clk_i,
     .rst_ni,
     .feed_i,
-    .run_i (act_q),
-    .hold_i(stall),
-    .tick_o(tick)
+    .run_i     (act_q),
+    .hold_i    (stall),
+    .run_next_i(act_d),
+    .tick_o    (tick)
   );
 
   ppc_line_step #(

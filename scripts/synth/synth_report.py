@@ -157,6 +157,8 @@ def variant_result(out, variant):
             r = pnr(os.path.join(vdir, "pnr_hx8k_seed%s.log" % s),
                     os.path.join(vdir, "pnr_hx8k_seed%s.json" % s))
             r["seed"] = int(s)
+            if "hx8k_timeout_seed%s" % s in info:
+                r = {"seed": int(s), "timeout_s": int(info["hx8k_timeout_seed%s" % s])}
             runs.append(r)
         fmaxes = [r["fmax_mhz"] for r in runs if "fmax_mhz" in r]
         res["ice40_core"] = core
@@ -208,8 +210,9 @@ def markdown(results):
                         "%s / %s / %s of %s" % (p0.get("lut4", "?"), p0.get("ff", "?"),
                                                 p0.get("lc_used", "?"), p0.get("lc_available", "?")),
                         "%d / %d" % (h["overhead"]["lut4"], h["overhead"]["ff"]),
-                        ", ".join("%.2f (%d)" % (p["fmax_mhz"], p["seed"]) for p in h["hx8k"]
-                                  if "fmax_mhz" in p),
+                        ", ".join("%.2f (%d)" % (p["fmax_mhz"], p["seed"]) if "fmax_mhz" in p
+                                  else "no route in %s s (%d)" % (p.get("timeout_s", "?"), p["seed"])
+                                  for p in h["hx8k"]),
                         "%.2f-%.2f" % (h["fmax_min_mhz"], h["fmax_max_mhz"])
                         if h["fmax_min_mhz"] is not None else "?"]
                 u = r["up5k"]

@@ -1,0 +1,22 @@
+// magnitude: the sign and the absolute value of a two's complement number,
+// |x| in W unsigned bits (|-2^(W-1)| = 2^(W-1) fits).
+//
+// Built as (x - 1) ^ all ones for a negative x, one adder whose sum bits take
+// the XOR: Yosys maps `x[W-1] ? -x : x` to an adder, an XOR and a mux per bit
+// (93 iCE40 LUT4 at W = 32, against 32 here). The top bit is taken apart,
+// as neg && (the low bits are all zero): computed as the other bits, its LUT
+// would read the sign on two inputs, which nextpnr-ice40 0.4 cannot route
+// when the LUT shares its cell with a carry (its router circles for ever).
+module magnitude #(
+  parameter int W = 32  // width of x and of |x| (>= 2)
+) (
+  input  logic [W-1:0] x_i,    // two's complement
+  output logic [W-1:0] mag_o,  // |x|, unsigned
+  output logic         neg_o   // x < 0
+);
+  logic [W-1:0] low;  // x[W-2:0] - neg, the carry out in bit W-1
+
+  assign neg_o = x_i[W-1];
+  assign low   = {1'b0, x_i[W-2:0]} + {1'b0, {(W - 1) {neg_o}}};
+  assign mag_o = {neg_o && !low[W-1], low[W-2:0] ^ {(W - 1) {neg_o}}};
+endmodule
