@@ -11,11 +11,12 @@
 // the rounded programmed end of the previous move (the program starts at 0).
 //
 // Lines (G0, G1): one dda_line command with delta = the rounded end - the
-// current lattice point. A move whose delta is 0 on every axis becomes no
-// command. When a delta does not fit ACC_W (|delta| <= 2^(ACC_W-1) - 1 is
-// what fits), the line is split into k = ceil((D + 1) / (2^(ACC_W-1) - 2))
-// equal pieces (D the largest axis travel in steps, unrounded), each ending
-// at the lattice point rounded from the programmed point i/k along the line:
+// current lattice point. A line command (a line, a piece, a chord) whose
+// delta is 0 on every axis is left out: such a move becomes no command.
+// When a delta does not fit ACC_W (|delta| <= 2^(ACC_W-1) - 1 is what fits),
+// the line is split into k = ceil((D + 1) / (2^(ACC_W-1) - 2)) equal pieces
+// (D the largest axis travel in steps, unrounded), each ending at the
+// lattice point rounded from the programmed point i/k along the line:
 // every piece's delta is then at most D/k + 1 and fits.
 //
 // Arcs (G2, G3): the programmed sweep theta (LinuxCNC's: the angle from the
@@ -63,11 +64,13 @@
 //     programmed sweep (rounding moves a sweep by ~1 step / radius).
 // Chords: the piece is cut into n chords of equal parameter, each ending at
 // the lattice point rounded from the path's point there, with
-// n >= sweep / (2 acos(1 - 0.4 / R)), R = the larger radius in mm times the
-// larger steps per unit of the plane's axes: the exact chord's sagitta,
-// R (1 - cos(alpha/2)), is then at most 0.4 step (below 0.5; the axial
-// axes are linear in the parameter on both, so only the plane contributes).
-// n also keeps every chord's delta within ACC_W.
+// n >= sweep / alpha, alpha = 2 acos(1 - 0.4 / R) (computed as
+// 4 asin(sqrt(0.2 / R)); n >= 1, and 1 when R <= 0.4), R = the larger radius
+// in mm times the larger steps per unit of the plane's axes: the exact
+// chord's sagitta, R (1 - cos(alpha/2)), is then at most 0.4 step (below
+// 0.5; the other axes are linear in the parameter on both the chord and the
+// helix, so only the plane contributes). n also keeps every chord's delta
+// within ACC_W.
 //
 // Feed words. Full mode: every command feed = 2^FEED_W. Programmed mode:
 // the command's programmed time T = its share of the move's path / rate,

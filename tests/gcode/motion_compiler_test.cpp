@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <random>
 #include <sstream>
 #include <vector>
 
@@ -534,6 +535,113 @@ TEST(MotionCompiler, RefusesMotionOnAnAxisTheMachineLacks) {
   MotionWidths bad;
   bad.feed_w = 40;
   EXPECT_THROW(MotionCompiler(none, Machine{}, bad, FeedMode::kFull, "e.ngc"), cli::UsageError);
+}
+
+// --- random programs ----------------------------------------------------------------------
+
+// Random moves as a reader would make them: lines and traverses on X Y Z A,
+// arcs in every plane with both directions, ends on or a little off the
+// circle (within LinuxCNC's 0.1 %), now and then extra turns, helix axis and
+// A moving, radii from 0.05 to 20 mm.
+class RandomMoves : public MoveSource {
+ public:
+  RandomMoves(uint64_t moves, uint64_t seed) : moves_(moves), rng_(seed) {}
+  bool next(Move& m) override {
+    if (n_ >= moves_) return false;
+    ++n_;
+    const Move prev = m_;
+    m_ = Move{};
+    m_.line = n_;
+    m_.feed = 100 + uniform(0, 3000);
+    m_.end = prev.end;
+    const int kind = static_cast<int>(uniform(0, 9));
+    if (kind < 4) {
+      m_.kind = kind == 0 ? MoveKind::kTraverse : MoveKind::kFeed;
+      for (size_t a = 0; a < 4; ++a)
+        if (uniform(0, 2) > 0) m_.end[a] = std::round(uniform(-80, 80) * 1e4) / 1e4;
+    } else {
+      m_.kind = MoveKind::kArc;
+      const Plane planes[] = {Plane::kXY, Plane::kXZ, Plane::kYZ};
+      m_.plane = planes[static_cast<size_t>(uniform(0, 2.99))];
+      const PlaneAxes pa = plane_axes(m_.plane);
+      const auto f = static_cast<size_t>(pa.first), g = static_cast<size_t>(pa.second);
+      const double r = std::exp(uniform(std::log(0.05), std::log(20)));
+      const double a0 = uniform(0, 2 * kPi);
+      m_.center = {prev.end[f] - r * std::cos(a0), prev.end[g] - r * std::sin(a0)};
+      const double sweep = uniform(0.01, 2 * kPi);
+      m_.rotation = (uniform(0, 1) < 0.5 ? 1 : -1) * (uniform(0, 1) < 0.1 ? 2 : 1);
+      const double a1 = a0 + (m_.rotation > 0 ? sweep : -sweep);
+      const double r1 = r * (1 + uniform(-0.0009, 0.0009));
+      m_.end[f] = m_.center[0] + r1 * std::cos(a1);
+      m_.end[g] = m_.center[1] + r1 * std::sin(a1);
+      if (uniform(0, 1) < 0.5) m_.end[static_cast<size_t>(pa.third)] += uniform(-5, 5);
+      if (uniform(0, 1) < 0.3) m_.end[kA] += uniform(-90, 90);
+    }
+    m = m_;
+    stats_.count(m);
+    return true;
+  }
+  const ReaderStats& stats() const override { return stats_; }
+
+ private:
+  double uniform(double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(rng_);
+  }
+  uint64_t moves_, n_ = 0;
+  std::mt19937_64 rng_;
+  Move m_;
+  ReaderStats stats_;
+};
+
+struct RandomCase {
+  const char* name;
+  std::array<int64_t, 6> steps;
+  MotionWidths widths;
+};
+
+TEST(MotionCompiler, RandomProgramsEndOnEveryMoveAndStayNearThePath) {
+  MotionWidths narrow;
+  narrow.acc_w = 14;
+  narrow.coord_w = 15;
+  narrow.ops_w = 16;
+  const RandomCase cases[] = {
+      {"default", {1000, 1000, 1000, 100, 100, 100}, MotionWidths{}},
+      {"coarse", {80, 80, 200, 10, 10, 10}, MotionWidths{}},
+      {"unequal", {1000, 640, 400, 100, 100, 100}, MotionWidths{}},
+      {"narrow", {1000, 1000, 1000, 100, 100, 100}, narrow},
+  };
+  uint64_t seed = 100;
+  for (const RandomCase& rc : cases) {
+    Machine m;
+    m.steps_per_unit = rc.steps;
+    RandomMoves src(120, seed++);
+    const Compiled c = compile(src, m, rc.widths, FeedMode::kProgrammed, rc.name);
+    EXPECT_TRUE(c.ends_on_reports) << rc.name;
+    EXPECT_EQ(c.reports.size(), 120u);
+    for (const MotionCommand& cmd : c.commands) {
+      EXPECT_GE(cmd.feed, 1u);
+      EXPECT_LE(cmd.feed, uint32_t{1} << rc.widths.feed_w);
+      const int64_t acc = (int64_t{1} << (rc.widths.acc_w - 1)) - 1;
+      for (const int64_t d : cmd.delta) EXPECT_LE(std::llabs(d), acc);
+      if (cmd.kind == MotionKind::kArc) {
+        const int64_t co = (int64_t{1} << (rc.widths.coord_w - 1)) - 1;
+        for (const int64_t v : {cmd.center[0], cmd.center[1], cmd.end[0], cmd.end[1]})
+          EXPECT_LE(std::llabs(v), co);
+        EXPECT_LT(cmd.ops, uint64_t{1} << rc.widths.ops_w);
+      }
+    }
+    const ModelRun run = run_on_model(c, m, 4);
+    std::printf(
+        "[ motion ] random %s: %llu commands (%llu arcs, %llu chords), contour steps: lines "
+        "%.3f arcs %.3f chords %.3f\n",
+        rc.name, static_cast<unsigned long long>(c.totals.commands),
+        static_cast<unsigned long long>(c.totals.arc_commands),
+        static_cast<unsigned long long>(c.totals.chords), run.contour_line_steps,
+        run.contour_arc_steps, run.contour_chord_steps);
+    EXPECT_LT(run.contour_line_steps, 3.0) << rc.name;
+    EXPECT_LT(run.contour_arc_steps, 3.5) << rc.name;
+    EXPECT_LT(run.contour_chord_steps, 3.0) << rc.name;
+  }
 }
 
 // --- streaming --------------------------------------------------------------------------------
