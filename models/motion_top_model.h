@@ -65,8 +65,10 @@
 //         ones (tests/models/motion_top_model_test.cpp).
 // Note: the slaved axes follow the engine's progress, which is the PPC
 // path's L1 length (one axis step per operation), not the arc's angle: a
-// helix axis is off the programmed (angle-linear) helix by up to about 2 %
-// of its travel per quadrant (tb/gcode/contour.h measures that in mm).
+// helix axis is off the programmed (angle-linear) helix by up to 2.1 % of
+// its travel per quadrant. The motion compiler (tb/gcode/motion_compiler.h,
+// "Arc tolerance") cuts such arcs into pieces to keep that within a step;
+// tb/gcode/contour.h measures the distance to the programmed path.
 #pragma once
 
 #include <array>
