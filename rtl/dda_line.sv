@@ -157,23 +157,26 @@ module dda_line #(
     .tick_o    (tick)
   );
 
-  // Without an advance only an idle engine loads.
+  // Each next state below is advance ? (its value if the engine advances) :
+  // (its value if not), both from registers: the clock's late signal enters
+  // at the last gate. Without an advance only an idle engine loads.
   logic idle_load;
+  logic act_adv, act_idle, lz_adv, lz_idle, bv_adv, bv_idle;
   assign idle_load = pre_load_q && !act_q && !abort_i;
-  always_comb begin
-    if (advance) begin
-      act_d       = pre_load_q || !left_zero_q;
-      left_d      = pre_load_q ? b_low_q : left_q - ACC_W'(1);
-      left_zero_d = pre_load_q ? (b_low_q == '0) : (left_q == ACC_W'(1));
-    end else begin
-      act_d       = (act_q && !abort_i) || idle_load;
-      left_d      = idle_load ? b_low_q : left_q;
-      left_zero_d = idle_load ? (b_low_q == '0) : left_zero_q;
-    end
-    a_valid_d  = !abort_i && (cmd_take || (a_valid_q && !a_to_b));
-    b_valid_d  = !abort_i && (a_to_b || (b_valid_q && !load));
-    pre_load_d = b_valid_d && (!act_d || left_zero_d);
-  end
+  assign act_adv   = pre_load_q || !left_zero_q;
+  assign act_idle  = (act_q && !abort_i) || idle_load;
+  assign lz_adv    = pre_load_q ? (b_low_q == '0) : (left_q == ACC_W'(1));
+  assign lz_idle   = idle_load ? (b_low_q == '0) : left_zero_q;
+  assign bv_adv    = a_to_b || (b_valid_q && !pre_load_q);
+  assign bv_idle   = !abort_i && (a_to_b || (b_valid_q && !idle_load));
+
+  assign act_d       = advance ? act_adv : act_idle;
+  assign left_zero_d = advance ? lz_adv : lz_idle;
+  assign left_d      = advance ? (pre_load_q ? b_low_q : left_q - ACC_W'(1)) :
+                                 (idle_load ? b_low_q : left_q);
+  assign b_valid_d   = advance ? bv_adv : bv_idle;
+  assign pre_load_d  = advance ? bv_adv && (!act_adv || lz_adv) : bv_idle && (!act_idle || lz_idle);
+  assign a_valid_d   = !abort_i && (cmd_take || (a_valid_q && !a_to_b));
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -222,6 +225,7 @@ module dda_line #(
     logic             a_moves_q, b_moves_q, moves_q;
     logic [ACC_W:0]   s_q;
     logic [ACC_W-1:0] x, y;
+    logic             moves_d;
 
     assign delta = cmd_delta_i[i*ACC_W +: ACC_W];
     magnitude #(
@@ -238,6 +242,9 @@ module dda_line #(
     assign x        = pre_load_q ? b_a0_q : (s_q[ACC_W-1:0] | hm_q);
     assign y        = pre_load_q ? b_mag_q : mag_q;
     assign carry[i] = s_q[ACC_W];
+    // A load brings the next command's; the last iteration or an abort ends it.
+    assign moves_d  = advance ? (pre_load_q ? b_moves_q : moves_q && !left_zero_q) :
+                                (idle_load ? b_moves_q : moves_q && !abort_i);
     assign moves[i] = moves_q;
     assign neg[i]   = neg_q;
 
@@ -268,8 +275,7 @@ module dda_line #(
           mag_q <= b_mag_q;
           neg_q <= b_neg_q;
         end
-        if (load) moves_q <= b_moves_q;
-        else if (last || abort_i) moves_q <= 1'b0;
+        moves_q <= moves_d;
         if (load || advance) s_q <= {1'b0, x} + {1'b0, y};
       end
     end
