@@ -11,6 +11,8 @@
 
 #include <systemc>
 
+#include "hls/dda_axis.h"
+#include "hls/dda_norm.h"
 #include "hls/feed_accum.h"
 #include "hls/pin_types.h"
 #include "hls/step_stage.h"
@@ -65,10 +67,10 @@ class DdaLine {
     hm_q_ = 0;
     done_q_ = false;
     for (int i = 0; i < AXES; ++i) {
-      a_mag_q_[i] = b_mag_q_[i] = mag_q_[i] = 0;
+      a_mag_q_[i] = b_mag_q_[i] = 0;
+      acc_[i].reset();
       a_neg_q_[i] = b_neg_q_[i] = neg_q_[i] = false;
       a_moves_q_[i] = b_moves_q_[i] = moves_q_[i] = false;
-      s_q_[i] = 0;
     }
     feed_.reset();
     out_.reset();
@@ -84,7 +86,7 @@ class DdaLine {
     bool carry[AXES], fire[AXES], stall = false;
     typename StepStage<AXES, POS_W, TIM_W>::Request want;
     for (int i = 0; i < AXES; ++i) {
-      carry[i] = s_q_[i][ACC_W];
+      carry[i] = acc_[i].carry();
       want.want_valid[i] = moves_q_[i];
       want.want_dir[i] = neg_q_[i];
       if (carry[i] && !out_.ready(i, want)) stall = true;
@@ -101,15 +103,11 @@ class DdaLine {
     out_.clock(in.timing, want, fire);
     feed_.clock(in.feed, act_q_, stall);
 
-    // Engine: one adder per axis, the first value plus the magnitude on a
-    // load, else the next iteration (s | hm) + magnitude.
-    if (load || advance) {
-      for (int i = 0; i < AXES; ++i) {
-        const acc_t x = load ? b_a0_q_ : acc_t(s_q_[i].range(ACC_W - 1, 0) | hm_q_);
-        const acc_t y = load ? b_mag_q_[i] : mag_q_[i];
-        s_q_[i] = sum_t(x) + sum_t(y);
-      }
-    }
+    // Engine: one accumulator per axis (written only on a load or an
+    // advance, and then the operands' select pre_load equals load).
+    const bool pre_load = b_valid_q_ && (!act_q_ || left_zero_q_);
+    for (int i = 0; i < AXES; ++i)
+      acc_[i].clock(pre_load, load, load || advance, b_a0_q_, b_mag_q_[i], acc_t(0), hm_q_);
     if (advance) {
       left_zero_q_ = left_q_ == 1;
       left_q_ = left_q_ - 1;
@@ -123,7 +121,6 @@ class DdaLine {
       left_zero_q_ = b_low_q_ == 0;
       hm_q_ = b_hm_q_;
       for (int i = 0; i < AXES; ++i) {
-        mag_q_[i] = b_mag_q_[i];
         neg_q_[i] = b_neg_q_[i];
         moves_q_[i] = b_moves_q_[i];
       }
@@ -133,11 +130,10 @@ class DdaLine {
 
     // Buffer B from buffer A: the masks from the OR of the magnitudes.
     if (a_to_b) {
-      const acc_t low = low_mask(a_any_q_);
-      const acc_t top = low ^ (low >> 1);
-      b_low_q_ = low;
-      b_hm_q_ = ~low;
-      b_a0_q_ = ~low | (a_half_q_ ? top : acc_t(0));
+      const DdaMasks<ACC_W> m = dda_norm<ACC_W>(a_any_q_);
+      b_low_q_ = m.low;
+      b_hm_q_ = m.hm;
+      b_a0_q_ = m.hm | (a_half_q_ ? m.top : acc_t(0));
       for (int i = 0; i < AXES; ++i) {
         b_mag_q_[i] = a_mag_q_[i];
         b_neg_q_[i] = a_neg_q_[i];
@@ -167,14 +163,6 @@ class DdaLine {
     a_half_q_ = cmd.half_preload;
   }
 
-  // The bits below n, the bit length of `any`: 2^n - 1.
-  static acc_t low_mask(const acc_t& any) {
-    const uint64_t v = any.to_uint64();
-    if (v == 0) return 0;
-    int n = 64 - __builtin_clzll(v);
-    return acc_t(n >= 64 ? ~uint64_t{0} : (uint64_t{1} << n) - 1);
-  }
-
   // Buffer A: the taken command.
   bool a_valid_q_;
   acc_t a_mag_q_[AXES];
@@ -188,8 +176,7 @@ class DdaLine {
   acc_t b_low_q_, b_hm_q_, b_a0_q_;
   // Engine.
   bool act_q_;
-  acc_t mag_q_[AXES];
-  sum_t s_q_[AXES];  // accumulator + magnitude, one iteration ahead; bit ACC_W is the carry
+  DdaAxis<ACC_W, true> acc_[AXES];
   bool neg_q_[AXES], moves_q_[AXES];
   acc_t hm_q_;
   acc_t left_q_;

@@ -108,15 +108,16 @@ module dda_line #(
   logic [ACC_W-1:0]      b_low_q, b_hm_q, b_a0_q;
   logic                  load;  // the engine loads buffer B this clock
   logic                  pre_load_q, pre_load_d;  // ...if it advances (or is idle): a register
-  logic [ACC_W-1:0]      a_low, a_top;
+  logic [ACC_W-1:0]      a_low, a_hm, a_top;
 
-  // Suffix OR, a_low[b] = |a_any_q[ACC_W-1:b]: the bits below n. Written as
-  // a log-depth prefix network (a chain of ORs maps to ten LUT levels).
-  always_comb begin
-    a_low = a_any_q;
-    for (int sh = 1; sh < ACC_W; sh = sh * 2) a_low = a_low | (a_low >> sh);
-  end
-  assign a_top = a_low ^ (a_low >> 1);  // bit n-1 alone (0 when n = 0)
+  dda_norm #(
+    .W(ACC_W)
+  ) u_norm (
+    .any_i(a_any_q),
+    .low_o(a_low),
+    .hm_o (a_hm),
+    .top_o(a_top)
+  );
 
   // ---------------------------------------------------------------------------
   // Engine: iteration count, feed and the per-axis slices below.
@@ -203,8 +204,8 @@ module dda_line #(
       pre_load_q <= pre_load_d;
       if (a_to_b) begin
         b_low_q <= a_low;
-        b_hm_q  <= ~a_low;
-        b_a0_q  <= ~a_low | (a_half_q ? a_top : '0);
+        b_hm_q  <= a_hm;
+        b_a0_q  <= a_hm | (a_half_q ? a_top : '0);
       end
       act_q       <= act_d;
       left_q      <= left_d;
@@ -220,11 +221,9 @@ module dda_line #(
   for (genvar i = 0; i < AXES; i++) begin : g_axis
     logic [ACC_W-1:0] delta;
     logic             cmd_neg;
-    logic [ACC_W-1:0] a_mag_q, b_mag_q, mag_q;
+    logic [ACC_W-1:0] a_mag_q, b_mag_q;
     logic             a_neg_q, b_neg_q, neg_q;
     logic             a_moves_q, b_moves_q, moves_q;
-    logic [ACC_W:0]   s_q;
-    logic [ACC_W-1:0] x, y;
     logic             moves_d;
 
     assign delta = cmd_delta_i[i*ACC_W +: ACC_W];
@@ -236,12 +235,24 @@ module dda_line #(
       .neg_o(cmd_neg)
     );
 
-    // One adder: the first value plus the magnitude on a load, else the next
-    // iteration (s_q is written only on a load or an advance, and then
+    // The accumulator (s_q is written only on a load or an advance, and then
     // pre_load_q == load).
-    assign x        = pre_load_q ? b_a0_q : (s_q[ACC_W-1:0] | hm_q);
-    assign y        = pre_load_q ? b_mag_q : mag_q;
-    assign carry[i] = s_q[ACC_W];
+    dda_axis #(
+      .W         (ACC_W),
+      .MODULUS_2N(1'b1)
+    ) u_acc (
+      .clk_i,
+      .rst_ni,
+      .pre_i  (pre_load_q),
+      .ld_i   (load),
+      .en_i   (load || advance),
+      .a0_i   (b_a0_q),
+      .b_mag_i(b_mag_q),
+      .b_dc_i ('0),
+      .hm_i   (hm_q),
+      .carry_o(carry[i])
+    );
+
     // A load brings the next command's; the last iteration or an abort ends it.
     assign moves_d  = advance ? (pre_load_q ? b_moves_q : moves_q && !left_zero_q) :
                                 (idle_load ? b_moves_q : moves_q && !abort_i);
@@ -256,10 +267,8 @@ module dda_line #(
         b_mag_q   <= '0;
         b_neg_q   <= 1'b0;
         b_moves_q <= 1'b0;
-        mag_q     <= '0;
         neg_q     <= 1'b0;
         moves_q   <= 1'b0;
-        s_q       <= '0;
       end else begin
         if (cmd_take) begin
           a_mag_q   <= cmd_mag[i*ACC_W +: ACC_W];
@@ -271,12 +280,8 @@ module dda_line #(
           b_neg_q   <= a_neg_q;
           b_moves_q <= a_moves_q;
         end
-        if (load) begin
-          mag_q <= b_mag_q;
-          neg_q <= b_neg_q;
-        end
+        if (load) neg_q <= b_neg_q;
         moves_q <= moves_d;
-        if (load || advance) s_q <= {1'b0, x} + {1'b0, y};
       end
     end
   end

@@ -3,5 +3,7 @@ stepdir_axis.sv
 step_stage.sv
 feed_accum.sv
 magnitude.sv
+dda_norm.sv
+dda_axis.sv
 dda_line.sv
 log_stepper.sv

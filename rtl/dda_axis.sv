@@ -1,0 +1,64 @@
+// dda_axis: one axis of the DDA engine: an accumulator that adds the axis's
+// magnitude each iteration and steps on its carry out of the modulus, kept
+// one iteration ahead (s_q = accumulator + increment), so the carry of the
+// iteration at hand is a register (carry_o).
+//
+// The accumulator is W bits wide with an offset that puts the modulus at
+// 2^W: its carry out is always the adder's top bit.
+//   MODULUS_2N = 1 (dda_line): modulus 2^n; the bits n and up are held at
+//     one (hm_i, the command's high mask): an iteration adds (s | hm) + mag.
+//   MODULUS_2N = 0 (general modulus N, e.g. a helical axis slaved to an arc's
+//     N operations): the offset is 2^W - N; an iteration adds s + mag, or
+//     s + dc after a carry, with dc = mag + 2^W - N given with the command
+//     (for modulus 2^n, dc = mag | hm).
+// A load's add is the first value plus the magnitude: a0_i + b_mag_i.
+//
+// Timing: the adder's operands select on pre_i (a register: the next add is
+// a load's) and the running registers; the clock's late signals (ld_i, en_i)
+// only enable registers.
+module dda_axis #(
+  parameter int W          = 32,  // magnitude and accumulator width
+  parameter bit MODULUS_2N = 1    // 1: modulus 2^n with the high mask; 0: general modulus
+) (
+  input  logic         clk_i,
+  input  logic         rst_ni,
+  input  logic         pre_i,    // this clock's add, if any, is a load's (register)
+  input  logic         ld_i,     // load the next command's magnitude (and dc) this clock
+  input  logic         en_i,     // take this clock's add (a load or an iteration)
+  input  logic [W-1:0] a0_i,     // the next command's first accumulator value (with the offset)
+  input  logic [W-1:0] b_mag_i,  // the next command's magnitude
+  input  logic [W-1:0] b_dc_i,   // the next command's increment after a carry (MODULUS_2N = 0)
+  input  logic [W-1:0] hm_i,     // the running command's high mask (MODULUS_2N = 1)
+  output logic         carry_o   // this iteration steps the axis
+);
+  logic [W-1:0] mag_q, x, y;
+  logic [W:0]   s_q;
+
+  assign x       = pre_i ? a0_i : (MODULUS_2N ? (s_q[W-1:0] | hm_i) : s_q[W-1:0]);
+  assign carry_o = s_q[W];
+
+  if (MODULUS_2N) begin : g_2n
+    logic unused_dc;  // no dc in this mode
+    assign unused_dc = ^b_dc_i;
+    assign y = pre_i ? b_mag_i : mag_q;
+  end else begin : g_n
+    logic unused_hm;  // no high mask in this mode
+    logic [W-1:0] dc_q;
+    assign unused_hm = ^hm_i;
+    assign y = pre_i ? b_mag_i : (s_q[W] ? dc_q : mag_q);
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) dc_q <= '0;
+      else if (ld_i) dc_q <= b_dc_i;
+    end
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      mag_q <= '0;
+      s_q   <= '0;
+    end else begin
+      if (ld_i) mag_q <= b_mag_i;
+      if (en_i) s_q <= {1'b0, x} + {1'b0, y};
+    end
+  end
+endmodule
