@@ -198,7 +198,7 @@ for variant in "${variants[@]}"; do
   #    iCE40 flow (which flattens by default) gives.
   run_step generic "$vdir/generic.log" yosys -p "$read_rtl; $chparam $core;
     synth -flatten -top $core; tee -q -o $vdir/generic_stat.json stat -json;
-    rename $core ${core}_net; write_verilog -noattr $vdir/${core}_net.v"
+    rename -top ${core}_net; write_verilog -noattr $vdir/${core}_net.v"
 
   if [ $generic_only -eq 0 ]; then
     # 2. The bare core mapped to iCE40 cells (not placed: too many ports).
