@@ -1,0 +1,271 @@
+// ppc_arc_engine: the point-by-point comparison (PPC) circular-arc engine of
+// rule M (models/ppc.h, models::PpcArcStream: the arc, its bound and its
+// derivation), shared by ppc_arc (its whole engine) and motion_top (its arcs).
+// It holds one arc and decides, per operation, which plane axis steps; the
+// caller owns the command buffer, the feed, abort and the step/dir stage.
+//
+// Load (load_i, wins over advance_i): ld_prep_i from rtl/ppc_arc_prep.sv
+// (s = start - centre, e = end - centre, E = end - start) and ld_ccw_i.
+// run_i says the loaded command is running (the caller's flag: it falls with
+// the last operation or an abort); advance_i does this clock's operation and
+// must imply run_i.
+//
+// Rule M: the PPC arc on the circle through s until, in the final pass
+// (after `laps` quadrant entries), the axis the arc would step has nothing
+// left towards e in its motion direction; then the guarded PPC line from p
+// to e (rtl/ppc_line_step.sv). No multiplier: the state is kept in motion
+// coordinates,
+//   m_a  the motion sign of each axis (mneg_q: 1 = negative)
+//   a_a = p_a m_a  (< 0 on the inward axis, the one moving towards the centre)
+//   g_a = (e_a - p_a) m_a  (what is left towards e in the motion direction)
+// so that one operation is: pick the axis (F >= 0: the inward one, else the
+// outward one), F += 2 a + 1 (one adder: {a, 1}), a += 1, g -= 1. A step that
+// lands the stepped coordinate on 0 (a = -1 before it) enters the next
+// quadrant: the other axis's motion sign flips (its a and g negate) and the
+// lap count falls by one.
+//
+// Set-up, on the clock the engine loads: the quadrant of s and of e (a point
+// on an axis belongs to the quadrant the motion enters) give the motion signs
+// and laps = entries from s's quadrant to e's (0..3; same quadrant: 0 if e is
+// ahead of s, 4 if it is behind on both axes, E * m <= 0 per axis; s == e is
+// a full circle, 4). Degenerate commands (|s|^2 < 2, or e == c) have no arc
+// phase.
+//
+// Operations:
+//   arc phase   one step; in the final pass, if the picked axis has g <= 0,
+//               the operation steps nothing and loads the closing line with
+//               |e - p| = |g| (the switch); a step that lands on e in the
+//               final pass (g = 1 on the stepped axis, 0 on the other) is the
+//               command's last operation, with no closing line (every arc
+//               whose end is on the circle ends this way);
+//   closing     the guarded PPC line, |dx| + |dy| operations; a degenerate
+//               command spends one operation loading it (and a zero-length
+//               one a second, empty one).
+//
+// Internal widths (no accepted command overflows):
+//   s, e, and a = p_a * m_a   PW = COORD_W + 1 (|e_a| <= 2^COORD_W - 1,
+//                             |p_a| < |s| + 1 <= 2^(COORD_W - 1/2) + 1)
+//   g = (e_a - p_a) * m_a     GW = COORD_W + 2 (|g| < 2^COORD_W + |p_a|)
+//   F = |p|^2 - |s|^2         FW = COORD_W + 2 (-2|s| + 1 <= F < 2|s| + 1)
+//   closing line |e - p|      MW = COORD_W + 1
+//
+// Every output is a function of the registers and run_i (none of advance_i).
+// hls/ppc_arc_engine.h is the same engine in C++.
+module ppc_arc_engine #(
+  parameter int COORD_W = 24  // width of the command's signed coordinates
+) (
+  input  logic                 clk_i,         // clock
+  input  logic                 rst_ni,        // asynchronous, active low
+  input  logic                 load_i,        // load the arc in ld_prep_i, ld_ccw_i
+  input  logic [6*COORD_W+3:0] ld_prep_i,     // s, e, E (rtl/ppc_arc_prep.sv)
+  input  logic                 ld_ccw_i,      // 1: counter-clockwise, 0: clockwise
+  input  logic                 run_i,         // the loaded command runs
+  input  logic                 advance_i,     // do this clock's operation (implies run_i)
+  output logic                 step_x_o,      // this clock's operation steps x
+  output logic                 step_y_o,      // this clock's operation steps y
+  output logic [1:0]           want_valid_o,  // the command may still step the axis (x bit 0)
+  output logic [1:0]           want_dir_o,    // the axis's direction, 1: negative (x bit 0)
+  output logic                 last_o         // this clock's operation is the command's last
+);
+  localparam int PW = COORD_W + 1;  // s, e, a = p m
+  localparam int GW = COORD_W + 2;  // g = (e - p) m
+  localparam int FW = COORD_W + 2;  // F = |p|^2 - |s|^2
+  localparam int MW = COORD_W + 1;  // closing line magnitudes
+  localparam logic [PW-1:0] PMinus1 = {PW{1'b1}};
+
+  // ---------------------------------------------------------------------------
+  // Set-up of the loaded command: quadrants, motion signs, laps, start state.
+  logic [PW-1:0]      ld_sx, ld_sy, ld_ex, ld_ey;
+  logic [COORD_W-1:0] ld_dx, ld_dy;
+  logic          sx_neg, sy_neg, sx_zero, sy_zero, ex_neg, ey_neg, ex_zero, ey_zero;
+  logic          qsx_neg, qsy_neg, qex_neg, qey_neg;  // quadrant signs of s and e
+  logic [1:0]    ks, ke, kdiff;  // quadrant indices I..IV = 0..3, entries between them
+  logic          ld_mneg_x, ld_mneg_y;  // motion signs at s (1: negative)
+  logic          ld_behind;  // e behind s on both axes (or e == s)
+  logic [2:0]    ld_laps;
+  logic          ld_degenerate;  // |s|^2 < 2 or e == c: no arc phase
+  logic          sx_small, sy_small;  // |s_a| <= 1
+  logic [PW-1:0] ld_ax, ld_ay;  // a = s m
+  logic [GW-1:0] ld_gx, ld_gy;  // g = E m
+  logic [GW-1:0] dx_ext, dy_ext;
+
+  assign ld_sx   = ld_prep_i[0 +: PW];
+  assign ld_sy   = ld_prep_i[PW +: PW];
+  assign ld_ex   = ld_prep_i[2*PW +: PW];
+  assign ld_ey   = ld_prep_i[3*PW +: PW];
+  assign ld_dx   = ld_prep_i[4*PW +: COORD_W];
+  assign ld_dy   = ld_prep_i[4*PW+COORD_W +: COORD_W];
+  assign sx_neg  = ld_sx[PW-1];
+  assign sy_neg  = ld_sy[PW-1];
+  assign sx_zero = ld_sx == '0;
+  assign sy_zero = ld_sy == '0;
+  assign ex_neg  = ld_ex[PW-1];
+  assign ey_neg  = ld_ey[PW-1];
+  assign ex_zero = ld_ex == '0;
+  assign ey_zero = ld_ey == '0;
+  // A point on an axis belongs to the quadrant the motion enters:
+  // CCW (x, 0) has the sign of x for y, (0, y) the opposite of y for x;
+  // CW the other way round (models/ppc.cpp motion_at()).
+  assign qsy_neg = sy_zero ? (sx_neg ^ !ld_ccw_i) : sy_neg;
+  assign qsx_neg = sx_zero ? (sy_neg ^ ld_ccw_i) : sx_neg;
+  assign qey_neg = ey_zero ? (ex_neg ^ !ld_ccw_i) : ey_neg;
+  assign qex_neg = ex_zero ? (ey_neg ^ ld_ccw_i) : ex_neg;
+  assign ks = {qsy_neg, qsx_neg ^ qsy_neg};
+  assign ke = {qey_neg, qex_neg ^ qey_neg};
+  assign kdiff = ld_ccw_i ? ke - ks : ks - ke;
+  // Motion CCW (-qy, qx), CW (qy, -qx).
+  assign ld_mneg_x = qsy_neg ^ ld_ccw_i;
+  assign ld_mneg_y = qsx_neg ^ !ld_ccw_i;
+  // E_a m_a <= 0: E_a is 0 or has the sign opposite to m_a.
+  assign ld_behind = (ld_dx == '0 || ld_dx[COORD_W-1] != ld_mneg_x) &&
+                     (ld_dy == '0 || ld_dy[COORD_W-1] != ld_mneg_y);
+  assign ld_laps = kdiff != 2'd0 ? {1'b0, kdiff} : (ld_behind ? 3'd4 : 3'd0);
+  assign sx_small = ld_sx[PW-1:1] == '0 || ld_sx == PMinus1;
+  assign sy_small = ld_sy[PW-1:1] == '0 || ld_sy == PMinus1;
+  assign ld_degenerate = (sx_small && sy_zero) || (sx_zero && sy_small) || (ex_zero && ey_zero);
+  assign ld_ax = ld_mneg_x ? -ld_sx : ld_sx;
+  assign ld_ay = ld_mneg_y ? -ld_sy : ld_sy;
+  assign dx_ext = {{2{ld_dx[COORD_W-1]}}, ld_dx};
+  assign dy_ext = {{2{ld_dy[COORD_W-1]}}, ld_dy};
+  assign ld_gx = ld_mneg_x ? -dx_ext : dx_ext;
+  assign ld_gy = ld_mneg_y ? -dy_ext : dy_ext;
+
+  // ---------------------------------------------------------------------------
+  // Engine.
+  logic          sw_q, sw_d;  // the next operation loads the closing line (degenerate)
+  logic          line_q, line_d;  // the closing line runs
+  logic [PW-1:0] ax_q, ax_d, ay_q, ay_d;  // a = p m
+  logic [GW-1:0] gx_q, gx_d, gy_q, gy_d;  // g = (e - p) m
+  logic [FW-1:0] f_q, f_d;  // F = |p|^2 - |s|^2
+  logic [1:0]    mneg_q, mneg_d;  // motion signs in the arc (1: negative)
+  logic [1:0]    lneg_q, lneg_d;  // directions of the closing line
+  logic [2:0]    laps_q, laps_d;  // quadrant entries before the final pass
+
+  logic          arc;  // the arc phase runs
+  logic          line_run;  // the closing line runs
+  logic          pick_x;  // the arc steps x (else y)
+  logic [PW-1:0] a_c;  // a of the picked axis
+  logic [GW-1:0] g_c, g_o;  // g of the picked and the other axis
+  logic          final_pass, arc_switch, entry, land, arc_last;
+  logic          line_load;  // load the closing line with |g| this clock
+  logic [MW-1:0] mag_x, mag_y;  // |g|
+  logic          l_x_left, l_y_left, l_step_x, l_step_y, l_last;
+  logic [1:0]    l_dir;  // direction of e - p: the sign of g, turned by the motion sign
+  logic [1:0]    flip;  // a quadrant entry flips the other axis's motion sign
+
+  assign arc        = run_i && !sw_q && !line_q;
+  assign line_run   = run_i && line_q;
+  // F >= 0 picks the inward axis (a < 0), F < 0 the outward one.
+  assign pick_x     = f_q[FW-1] ^ ax_q[PW-1];
+  assign a_c        = pick_x ? ax_q : ay_q;
+  assign g_c        = pick_x ? gx_q : gy_q;
+  assign g_o        = pick_x ? gy_q : gx_q;
+  assign final_pass = laps_q == 3'd0;
+  assign arc_switch = final_pass && (g_c[GW-1] || g_c == '0);
+  assign entry      = a_c == PMinus1;
+  assign land       = g_c == GW'(1) && g_o == '0;
+  assign arc_last   = !arc_switch && (final_pass || (laps_q == 3'd1 && entry)) && land;
+  assign mag_x      = MW'(gx_q[GW-1] ? -gx_q : gx_q);
+  assign mag_y      = MW'(gy_q[GW-1] ? -gy_q : gy_q);
+  assign l_dir      = {gy_q[GW-1] ^ mneg_q[1], gx_q[GW-1] ^ mneg_q[0]};
+  assign flip       = pick_x ? 2'b10 : 2'b01;
+
+  assign step_x_o     = arc ? !arc_switch && pick_x : line_run && l_step_x;
+  assign step_y_o     = arc ? !arc_switch && !pick_x : line_run && l_step_y;
+  assign want_valid_o = arc ? 2'b11 : line_run ? {l_y_left, l_x_left} : 2'b00;
+  assign want_dir_o   = line_q ? lneg_q : mneg_q;
+  assign last_o       = (arc && arc_last) || (line_run && l_last);
+  assign line_load    = advance_i && (sw_q || (arc && arc_switch));
+
+  ppc_line_step #(
+    .MAG_W(MW)
+  ) u_line (
+    .clk_i,
+    .rst_ni,
+    .load_i   (line_load),
+    .load_ax_i(mag_x),
+    .load_ay_i(mag_y),
+    .advance_i(advance_i && line_q),
+    .x_left_o (l_x_left),
+    .y_left_o (l_y_left),
+    .step_x_o (l_step_x),
+    .step_y_o (l_step_y),
+    .last_o   (l_last)
+  );
+
+  always_comb begin
+    sw_d   = sw_q;
+    line_d = line_q;
+    ax_d   = ax_q;
+    ay_d   = ay_q;
+    gx_d   = gx_q;
+    gy_d   = gy_q;
+    f_d    = f_q;
+    mneg_d = mneg_q;
+    lneg_d = lneg_q;
+    laps_d = laps_q;
+    if (line_load) begin
+      sw_d   = 1'b0;
+      line_d = 1'b1;
+      lneg_d = l_dir;
+    end else if (advance_i && arc) begin
+      f_d = f_q + {a_c, 1'b1};  // F += 2 p_a m_a + 1
+      if (pick_x) begin
+        ax_d = ax_q + PW'(1);
+        gx_d = gx_q - GW'(1);
+        if (entry) begin
+          ay_d = -ay_q;
+          gy_d = -gy_q;
+        end
+      end else begin
+        ay_d = ay_q + PW'(1);
+        gy_d = gy_q - GW'(1);
+        if (entry) begin
+          ax_d = -ax_q;
+          gx_d = -gx_q;
+        end
+      end
+      if (entry) begin
+        mneg_d = mneg_q ^ flip;
+        laps_d = laps_q - 3'd1;
+      end
+    end
+    if (load_i) begin
+      sw_d   = ld_degenerate;
+      line_d = 1'b0;
+      ax_d   = ld_ax;
+      ay_d   = ld_ay;
+      gx_d   = ld_gx;
+      gy_d   = ld_gy;
+      f_d    = '0;
+      mneg_d = {ld_mneg_y, ld_mneg_x};
+      laps_d = ld_laps;
+    end
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      sw_q   <= 1'b0;
+      line_q <= 1'b0;
+      ax_q   <= '0;
+      ay_q   <= '0;
+      gx_q   <= '0;
+      gy_q   <= '0;
+      f_q    <= '0;
+      mneg_q <= '0;
+      lneg_q <= '0;
+      laps_q <= '0;
+    end else begin
+      sw_q   <= sw_d;
+      line_q <= line_d;
+      ax_q   <= ax_d;
+      ay_q   <= ay_d;
+      gx_q   <= gx_d;
+      gy_q   <= gy_d;
+      f_q    <= f_d;
+      mneg_q <= mneg_d;
+      lneg_q <= lneg_d;
+      laps_q <= laps_d;
+    end
+  end
+endmodule
