@@ -20,13 +20,14 @@ class DdaAxis {
 
   // One rising clock edge: `pre` the next add is a load's (a register),
   // `ld` load the next command's magnitude and dc, `en` take this clock's add.
-  void clock(bool pre, bool ld, bool en, const word_t& a0, const word_t& b_mag, const word_t& b_dc,
+  void clock(bool pre, bool ld, bool en, const word_t& a0, const word_t& b_mag, const sum_t& b_dc,
              const word_t& hm) {
     if (en) {
       const word_t low = s_q_.range(W - 1, 0);
       const word_t x = pre ? a0 : (MODULUS_2N ? word_t(low | hm) : low);
-      const word_t y = pre ? b_mag : (!MODULUS_2N && s_q_[W] ? dc_q_ : mag_q_);
-      s_q_ = sum_t(x) + sum_t(y);
+      // dc has W + 1 bits (rtl/dda_axis.sv): 2^W when the axis steps every iteration.
+      const sum_t y = pre ? sum_t(b_mag) : (!MODULUS_2N && s_q_[W] ? dc_q_ : sum_t(mag_q_));
+      s_q_ = sum_t(x) + y;
     }
     if (ld) {
       mag_q_ = b_mag;
@@ -35,7 +36,8 @@ class DdaAxis {
   }
 
  private:
-  word_t mag_q_ = 0, dc_q_ = 0;
+  word_t mag_q_ = 0;
+  sum_t dc_q_ = 0;
   sum_t s_q_ = 0;  // accumulator + increment, one iteration ahead; bit W is the carry
 };
 

@@ -10,7 +10,8 @@
 //   MODULUS_2N = 0 (general modulus N, e.g. a helical axis slaved to an arc's
 //     N operations): the offset is 2^W - N; an iteration adds s + mag, or
 //     s + dc after a carry, with dc = mag + 2^W - N given with the command
-//     (for modulus 2^n, dc = mag | hm).
+//     (for modulus 2^n, dc = mag | hm). dc has W + 1 bits: mag <= N, and an
+//     axis that steps on every iteration (mag = N) has dc = 2^W.
 // A load's add is the first value plus the magnitude: a0_i + b_mag_i.
 //
 // Timing: the adder's operands select on pre_i (a register: the next add is
@@ -27,11 +28,12 @@ module dda_axis #(
   input  logic         en_i,     // take this clock's add (a load or an iteration)
   input  logic [W-1:0] a0_i,     // the next command's first accumulator value (with the offset)
   input  logic [W-1:0] b_mag_i,  // the next command's magnitude
-  input  logic [W-1:0] b_dc_i,   // the next command's increment after a carry (MODULUS_2N = 0)
+  input  logic [W:0]   b_dc_i,   // the next command's increment after a carry (MODULUS_2N = 0)
   input  logic [W-1:0] hm_i,     // the running command's high mask (MODULUS_2N = 1)
   output logic         carry_o   // this iteration steps the axis
 );
-  logic [W-1:0] mag_q, x, y;
+  logic [W-1:0] mag_q, x;
+  logic [W:0]   y;
   logic [W:0]   s_q;
 
   assign x       = pre_i ? a0_i : (MODULUS_2N ? (s_q[W-1:0] | hm_i) : s_q[W-1:0]);
@@ -40,12 +42,12 @@ module dda_axis #(
   if (MODULUS_2N) begin : g_2n
     logic unused_dc;  // no dc in this mode
     assign unused_dc = ^b_dc_i;
-    assign y = pre_i ? b_mag_i : mag_q;
+    assign y = {1'b0, pre_i ? b_mag_i : mag_q};
   end else begin : g_n
     logic unused_hm;  // no high mask in this mode
-    logic [W-1:0] dc_q;
+    logic [W:0] dc_q;
     assign unused_hm = ^hm_i;
-    assign y = pre_i ? b_mag_i : (s_q[W] ? dc_q : mag_q);
+    assign y = pre_i ? {1'b0, b_mag_i} : (s_q[W] ? dc_q : {1'b0, mag_q});
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) dc_q <= '0;
       else if (ld_i) dc_q <= b_dc_i;
@@ -58,7 +60,7 @@ module dda_axis #(
       s_q   <= '0;
     end else begin
       if (ld_i) mag_q <= b_mag_i;
-      if (en_i) s_q <= {1'b0, x} + {1'b0, y};
+      if (en_i) s_q <= {1'b0, x} + y;
     end
   end
 endmodule
