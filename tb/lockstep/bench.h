@@ -147,11 +147,16 @@ class Bench {
         monitors_[static_cast<size_t>(i)].observe(cycle_, (seen.step >> i) & 1, (seen.dir >> i) & 1,
                                                   frame_.timing, r.timing_violations,
                                                   r.timing_violation_count);
+      const uint64_t done_before = scoreboard_->done_count();
       const bool moved = scoreboard_->observe(cycle_, seen, r);
       if (moved) {
         if (path_csv_) path_row("move", scoreboard_->position(), scoreboard_->last_error());
         if (options_.record_path) r.visited.push_back(scoreboard_->position());
+        if (options_.observer)
+          options_.observer->move(scoreboard_->position(), scoreboard_->current_command());
       }
+      if (options_.observer && scoreboard_->done_count() > done_before)
+        options_.observer->done(done_before, scoreboard_->position());
       if (options_.record_path && seen.done) r.done_cycles.push_back(cycle_ - case_start_cycle_);
       if (frame_.abort) abort_edge(moved, r);
       follow_abort(seen, r);
@@ -164,7 +169,7 @@ class Bench {
       case Phase::kRun:
         // Idle after the last item: the last command taken shows busy_o on the
         // edge that took it, so !busy here means everything has run.
-        if (item_ == cases_[case_index_].items.size() && !frame_.cmd_valid && !rtl.busy) {
+        if (!items_left_ && !frame_.cmd_valid && !rtl.busy) {
           phase_ = Phase::kTail;
           phase_left_ = kTailCycles;
         }
@@ -225,6 +230,8 @@ class Bench {
     case_start_cycle_ = cycle_;
     budget_ = cycle_budget(c, limits_);
     item_ = 0;
+    items_left_ = !c.items.empty() || c.more;
+    have_streamed_ = false;
     gap_left_ = 0;
     settings_ = c.settings;
     last_rtl_ = OutPins{};
@@ -257,25 +264,24 @@ class Bench {
   // command is offered until the core takes it (cmd_ready_o, a register, seen
   // after the previous edge, tells whether it will).
   void drive_items() {
-    const auto& items = cases_[case_index_].items;
-    while (item_ < items.size()) {
-      const Item<A>& it = items[item_];
+    while (const Item<A>* item = current_item()) {
+      const Item<A>& it = *item;
       switch (it.kind) {
         case Kind::kSettings:
           settings_ = it.settings;
-          ++item_;
+          next_item();
           continue;
         case Kind::kGap:
           if (gap_left_ == 0) gap_left_ = it.cycles;
-          if (--gap_left_ == 0) ++item_;
+          if (--gap_left_ == 0) next_item();
           return;
         case Kind::kDrain:
           if (last_rtl_.busy) return;
-          ++item_;
+          next_item();
           continue;
         case Kind::kAbort:
           frame_.abort = true;
-          ++item_;
+          next_item();
           return;
         case Kind::kCommand:
           frame_.cmd_valid = true;
@@ -286,15 +292,51 @@ class Bench {
             abort_open_ = false;
             scoreboard_->command_taken(it.cmd, settings_.setup);
             ++results_.back().commands;
-            ++item_;
             if (path_csv_) ideal_rows(it.cmd);
             A::apply(it.cmd, path_target_);
             path_row("target", path_target_);
+            next_item();
           } else {
             ++results_.back().offer_wait_cycles;
           }
           return;
       }
+    }
+  }
+
+  // The case's item at hand: from Case::items, then pulled one at a time
+  // from Case::more (null when none is left).
+  const Item<A>* current_item() {
+    const Case<A>& c = cases_[case_index_];
+    if (item_ < c.items.size()) return &c.items[item_];
+    if (!c.more || !items_left_) {
+      items_left_ = false;
+      return nullptr;
+    }
+    if (!have_streamed_) {
+      if (!c.more->next(streamed_)) {
+        items_left_ = false;
+        return nullptr;
+      }
+      have_streamed_ = true;
+      if (streamed_.kind == Kind::kCommand) {
+        budget_ += streamed_command_budget<A>(streamed_.cmd, limits_, settings_);
+        ++results_.back().commands_offered;
+      } else if (streamed_.kind == Kind::kGap) {
+        budget_ += 2 * streamed_.cycles;
+      } else {
+        budget_ += 32;
+      }
+    }
+    return &streamed_;
+  }
+  void next_item() {
+    if (item_ < cases_[case_index_].items.size()) {
+      ++item_;
+      if (item_ == cases_[case_index_].items.size() && !cases_[case_index_].more)
+        items_left_ = false;
+    } else {
+      have_streamed_ = false;
     }
   }
 
@@ -413,6 +455,9 @@ class Bench {
   uint64_t case_start_cycle_ = 0;
   uint64_t budget_ = 0;
   size_t item_ = 0;
+  bool items_left_ = false;     // Case::items or Case::more still has items
+  Item<A> streamed_;            // the item pulled from Case::more...
+  bool have_streamed_ = false;  // ...and not yet done
   uint64_t gap_left_ = 0;
   RunSettings<A> settings_;
   Frame<A> frame_;

@@ -6,6 +6,8 @@
 #include <optional>
 #include <string>
 
+#include "models/lattice_path.h"
+
 namespace hwinterp::tb {
 
 // Test hooks that prove the checks can fail. Cycles count clock edges from
@@ -16,6 +18,17 @@ struct FaultPlan {
   // Invert step_o[0] of the RTL outputs after the comparison, as the
   // monitors and the scoreboard see them (a glitch on the pin).
   std::optional<uint64_t> glitch_step_at;
+};
+
+// What a run reports move by move to whoever watches it.
+class MoveObserver {
+ public:
+  virtual ~MoveObserver() = default;
+  // The axes stepped to `at` in a move of command `command` (0-based, in the
+  // case's order of commands taken).
+  virtual void move(const models::LatticePoint& at, uint64_t command) = 0;
+  // Command `command` completed (done_o) with the axes at `at`.
+  virtual void done(uint64_t command, const models::LatticePoint& at) = 0;
 };
 
 struct BenchOptions {
@@ -37,6 +50,9 @@ struct BenchOptions {
   bool record_path = false;
   // Raise abort_i (with cmd_valid_i low) on this clock edge of the run.
   std::optional<uint64_t> abort_at;
+  // Told of every move and every completed command (hwinterp gcode's contour
+  // and end points); null: none. Called per move, not per clock.
+  MoveObserver* observer = nullptr;
 };
 
 }  // namespace hwinterp::tb

@@ -5,45 +5,12 @@
 
 #include "hwinterp_core_adapters.h"
 #include "hwinterp_variants.h"
-#include "tb/lockstep/direct.h"
-#include "tb/lockstep/systemc.h"
+#include "tb/lockstep/bench_run.h"
 #include "tb/stimulus/from_args.h"
 
 namespace hwinterp::tb {
 
 namespace {
-
-template <class A, class Cfg>
-class BenchRunOf final : public BenchRun {
- public:
-  BenchRunOf(CoreLimits limits, std::vector<Case<A>> cases, const BenchOptions& options)
-      : bench_(std::move(limits), std::move(cases), options) {}
-  const CoreLimits& limits() const override { return bench_.limits(); }
-  size_t case_count() const override { return bench_.case_count(); }
-  void run_direct() override { tb::run_direct<A, Cfg>(bench_); }
-  std::unique_ptr<sc_core::sc_module> systemc_module(ScRunControl& control) override {
-    return std::make_unique<ScBench<A, Cfg>>(sc_core::sc_gen_unique_name(Cfg::kVariant), bench_,
-                                             control);
-  }
-  bool finished() const override { return bench_.finished(); }
-  const std::vector<CaseResult>& results() const override { return bench_.results(); }
-  uint64_t cycles() const override { return bench_.cycles(); }
-  void close() override { bench_.close(); }
-
- private:
-  Bench<A> bench_;
-};
-
-template <class A, class Cfg>
-std::unique_ptr<BenchRun> make_run(const CoreLimits& l, std::vector<Case<A>> cases,
-                                   const BenchOptions& options) {
-  for (const auto& c : cases) validate_case(c, l);
-  try {
-    return std::make_unique<BenchRunOf<A, Cfg>>(l, std::move(cases), options);
-  } catch (const std::runtime_error& e) {
-    throw cli::UsageError(e.what());  // an output file that cannot be written
-  }
-}
 
 template <class A, class Cfg>
 VariantEntry make_variant() {
@@ -56,9 +23,9 @@ VariantEntry make_variant() {
     std::istringstream in(job);
     return make_run<A, Cfg>(l, parse_job<A>(in, "job", l, default_settings<A>(l)), options);
   };
-  v.regression = [l = v.limits](uint64_t commands, uint64_t seed, const BenchOptions& options,
-                                 const std::function<bool(uint64_t)>& keep)
-      -> std::unique_ptr<BenchRun> {
+  v.regression = [l = v.limits](
+                     uint64_t commands, uint64_t seed, const BenchOptions& options,
+                     const std::function<bool(uint64_t)>& keep) -> std::unique_ptr<BenchRun> {
     std::vector<Case<A>> all = A::regression_cases(l, commands, seed), kept;
     for (uint64_t i = 0; i < all.size(); ++i) {
       all[i].ordinal = i;

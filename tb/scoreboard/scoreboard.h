@@ -25,6 +25,7 @@
 #pragma once
 
 #include <cstdint>
+#include <deque>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -70,6 +71,12 @@ class Scoreboard {
     taken_.push_back(std::move(c));
   }
 
+  // Commands taken so far, and those completed (done_o) so far.
+  uint64_t taken_count() const { return first_ + taken_.size(); }
+  uint64_t done_count() const { return done_count_; }
+  // The (0-based) command whose moves the core is making.
+  uint64_t current_command() const { return current_; }
+
   // Outputs after one clock edge (not during reset). Returns true when a
   // move (a rising step edge on some axis) was applied.
   bool observe(uint64_t cycle, const OutPins& pins, CaseResult& r) {
@@ -108,7 +115,7 @@ class Scoreboard {
     // done_o comes with the last operation's steps: by then every move of that
     // command (and of the zero-move commands before it) has been seen.
     if (pins.done) {
-      if (done_count_ >= taken_.size()) {
+      if (done_count_ >= taken_count()) {
         error(r, "cycle " + std::to_string(cycle) + ": done_o pulse with no command running");
       } else if (!diverged_) {
         for (size_t k = current_; k <= done_count_; ++k)
@@ -130,6 +137,7 @@ class Scoreboard {
         }
       }
       ++done_count_;
+      forget_done();
     }
     // pos_o holds the position relative to reset, POS_W bits.
     const uint64_t mask = limits_.pos_w >= 64 ? ~uint64_t{0} : (uint64_t{1} << limits_.pos_w) - 1;
@@ -152,8 +160,8 @@ class Scoreboard {
   // position is on the reference path (every move so far was the model's).
   bool abort() {
     const bool on_path = !diverged_;
-    if (taken_.size() > done_count_) taken_.resize(static_cast<size_t>(done_count_));
-    current_ = taken_.size();
+    if (taken_count() > done_count_) taken_.resize(static_cast<size_t>(done_count_ - first_));
+    current_ = static_cast<size_t>(taken_count());
     stream_.reset();
     expected_end_ = at_;
     diverged_ = false;  // the findings so far are reported; compare afresh
@@ -164,8 +172,8 @@ class Scoreboard {
   void finish(CaseResult& r) {
     r.end_position = at_;
     r.expected_end_position = expected_end_;
-    if (done_count_ != taken_.size())
-      error(r, std::to_string(taken_.size()) + " commands taken but " +
+    if (done_count_ != taken_count())
+      error(r, std::to_string(taken_count()) + " commands taken but " +
                    std::to_string(done_count_) + " done_o pulses");
     if (at_ != expected_end_)
       error(r, "ended at " + point_text(at_) + ", expected " + point_text(expected_end_));
@@ -205,12 +213,22 @@ class Scoreboard {
     return Reference(c.start, c.cmd, c.setup, limits_);
   }
 
+  // Commands both completed and consumed are not needed any more: memory
+  // stays bounded however long the stream.
+  void forget_done() {
+    while (!taken_.empty() && first_ < current_ && first_ < done_count_) {
+      taken_.pop_front();
+      ++first_;
+    }
+  }
+  const Command& taken(size_t command) const { return taken_[command - first_]; }
+
   // The next move across the commands taken, in order.
   bool next_expected_move(Move& m) {
     for (;;) {
       if (!stream_) {
-        if (current_ >= taken_.size()) return false;
-        stream_.emplace(reference(taken_[current_]));
+        if (current_ >= taken_count()) return false;
+        stream_.emplace(reference(taken(current_)));
       }
       if (stream_->next(m)) return true;
       stream_.reset();
@@ -225,7 +243,7 @@ class Scoreboard {
       Reference probe = *stream_;
       return probe.next(m);
     }
-    Reference probe = reference(taken_[command]);
+    Reference probe = reference(taken(command));
     return probe.next(m);
   }
 
@@ -251,7 +269,8 @@ class Scoreboard {
   int axes_;
   uint64_t case_start_cycle_;
   models::LatticePoint start_, at_, expected_end_;
-  std::vector<Command> taken_;
+  std::deque<Command> taken_;  // from command first_ on: those not yet done or not yet consumed
+  size_t first_ = 0;
   size_t current_ = 0;               // command whose moves are being consumed
   std::optional<Reference> stream_;  // moves of taken_[current_]
   uint64_t done_count_ = 0;

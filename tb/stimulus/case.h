@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -33,13 +34,25 @@ struct Item {
   int source_line = 0;        // job-file line, for messages
 };
 
+// Items produced one at a time while the case runs, after Case::items: a
+// stream of any length in bounded memory (hwinterp gcode's part programs).
+// The producer validates what it yields (validate_case() sees only `items`);
+// next() is called once per item, never per clock.
+template <class A>
+class ItemSource {
+ public:
+  virtual ~ItemSource() = default;
+  virtual bool next(Item<A>& it) = 0;  // false at the end
+};
+
 template <class A>
 struct Case {
   std::string name;
-  uint64_t ordinal = 0;        // its position in its run's full list (regress --shard keeps a subset)
+  uint64_t ordinal = 0;  // its position in its run's full list (regress --shard keeps a subset)
   models::LatticePoint start;  // absolute position the core's counters start from
   RunSettings<A> settings;     // in force from reset
   std::vector<Item<A>> items;
+  std::shared_ptr<ItemSource<A>> more;  // items after `items`; null: none
 };
 
 template <class A>

@@ -165,17 +165,33 @@ void validate_case(const Case<A>& c, const CoreLimits& limits) {
     throw cli::UsageError(name + ": ends in feed hold (feed 0); resume the feed first");
 }
 
+// One complete step/dir timing round (len + space + setup + hold), the worst
+// stall of one engine operation.
+inline uint64_t timing_round(const StepdirTiming& t) {
+  auto m = [](uint32_t v) { return uint64_t{v ? v : 1u}; };
+  return m(t.step_len) + m(t.step_space) + m(t.dir_setup) + m(t.dir_hold) + 2;
+}
+
+// The clocks a command streamed by a Case's ItemSource may take on a correct
+// core, with the same margin as cycle_budget(): added to the budget as the
+// bench pulls it.
+template <class A>
+uint64_t streamed_command_budget(const typename A::Command& cmd, const CoreLimits& limits,
+                                 const RunSettings<A>& s) {
+  const uint64_t feed = s.feed ? s.feed : limits.full_feed();
+  const uint64_t feed_period = (limits.full_feed() + feed - 1) / feed;
+  return 2 * (16 + A::work(cmd, limits) * (feed_period + timing_round(s.timing)));
+}
+
 // Upper bound on the clock edges the case needs on a correct core, with
-// margin; running past it means the core hung.
+// margin; running past it means the core hung. (Streamed items add theirs as
+// they come: streamed_command_budget().)
 template <class A>
 uint64_t cycle_budget(const Case<A>& c, const CoreLimits& limits) {
   using Kind = typename Item<A>::Kind;
   // Worst case per engine operation: a full feed period plus one complete
   // step/dir timing round (len + space + setup + hold) of stall.
-  auto round = [](const StepdirTiming& t) {
-    auto m = [](uint32_t v) { return uint64_t{v ? v : 1u}; };
-    return m(t.step_len) + m(t.step_space) + m(t.dir_setup) + m(t.dir_hold) + 2;
-  };
+  auto round = [](const StepdirTiming& t) { return timing_round(t); };
   uint64_t min_feed = c.settings.feed ? c.settings.feed : limits.full_feed();
   uint64_t max_round = round(c.settings.timing);
   uint64_t budget = 64, operations = 0;
@@ -186,7 +202,7 @@ uint64_t cycle_budget(const Case<A>& c, const CoreLimits& limits) {
     } else if (it.kind == Kind::kGap) {
       budget += it.cycles;
     } else if (it.kind == Kind::kCommand) {
-      operations += A::work(it.cmd);
+      operations += A::work(it.cmd, limits);
       budget += 16;
     } else {
       budget += 16;
@@ -234,6 +250,13 @@ class JobLine {
       case_.items.push_back(it);
     }
     return case_.items.back().settings;
+  }
+  // The settings in force at this line, without adding a settings item.
+  const RunSettings<A>& current_settings() const {
+    using Kind = typename Item<A>::Kind;
+    for (auto it = case_.items.rbegin(); it != case_.items.rend(); ++it)
+      if (it->kind == Kind::kSettings) return it->settings;
+    return case_.settings;
   }
   // Words [first, first + n) as lattice coordinates (n = 0: to the end).
   std::vector<int64_t> integers(size_t first, size_t n = 0) const {

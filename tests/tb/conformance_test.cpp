@@ -29,7 +29,7 @@ class Conformance : public ::testing::Test {
     typename A::Command previous{};
     for (int tries = 0; tries < 100000; ++tries) {
       const auto c = A::random_command(rng, l, at, previous);
-      if (A::work(c) >= work) return c;
+      if (A::work(c, l) >= work) return c;
       previous = c;
     }
     ADD_FAILURE() << "no command with " << work << " operations";

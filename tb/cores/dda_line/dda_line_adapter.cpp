@@ -23,7 +23,7 @@ bool Adapter::Reference::next(Move& m) {
   return true;
 }
 
-uint64_t Adapter::work(const Command& c) {
+uint64_t Adapter::work(const Command& c, const CoreLimits&) {
   return models::dda_iterations(delta_vector(c, kMaxAxes));
 }
 

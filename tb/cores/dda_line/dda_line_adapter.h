@@ -82,7 +82,7 @@ struct Adapter {
     models::ErrorBound bound_;
   };
   static void apply(const Command& c, models::LatticePoint& at) { apply_deltas(c, at); }
-  static uint64_t work(const Command& c);  // 2^n iterations
+  static uint64_t work(const Command& c, const CoreLimits&);  // 2^n iterations
 
   // --- stimulus ---------------------------------------------------------------
   // Deltas fit ACC_W (validate_case() checks the end point against POS_W;

@@ -20,7 +20,7 @@ bool Adapter::Reference::next(Move& m) {
   return true;
 }
 
-uint64_t Adapter::work(const Command& c) {
+uint64_t Adapter::work(const Command& c, const CoreLimits&) {
   return models::fixed_ratio_ticks(delta_vector(c, kMaxAxes));
 }
 

@@ -52,7 +52,7 @@ struct Adapter : DeltaPayload<Adapter> {
   // Engine ticks: max(M, 1). (The FRAC_W + 1 divider clocks overlap the
   // previous command; the hang budget's per-command margin covers them
   // where they do not.)
-  static uint64_t work(const Command& c);
+  static uint64_t work(const Command& c, const CoreLimits&);
 
   // --- stimulus ---------------------------------------------------------------
   // Every octant, axis-parallel and zero-length commands, reversals,

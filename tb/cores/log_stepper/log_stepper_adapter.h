@@ -158,7 +158,7 @@ struct Adapter {
   static void apply(const Command& c, models::LatticePoint& at) {
     for (size_t i = 0; i < 4 && i < at.size(); ++i) at[i] += c.end[i];
   }
-  static uint64_t work(const Command& c) { return c.work; }
+  static uint64_t work(const Command& c, const CoreLimits&) { return c.work; }
 
   // --- stimulus ---------------------------------------------------------------
   static void validate(const Command& c, const models::LatticePoint& from, const CoreLimits& l,

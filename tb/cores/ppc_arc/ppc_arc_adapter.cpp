@@ -61,7 +61,9 @@ double Adapter::Reference::error(const models::LatticePoint& p) const {
   return ideal_.error({p[0] - start_[0], p[1] - start_[1]});
 }
 
-uint64_t Adapter::work(const Command& c) { return relative_stream(c).operation_bound(); }
+uint64_t Adapter::work(const Command& c, const CoreLimits&) {
+  return relative_stream(c).operation_bound();
+}
 
 void Adapter::validate(const Command& c, const models::LatticePoint& from, const CoreLimits& l,
                        const std::string& where) {

@@ -121,7 +121,7 @@ struct Adapter {
     at[1] += c.end[1];
   }
   // Engine operations, at most (models::PpcArcStream::operation_bound()).
-  static uint64_t work(const Command& c);
+  static uint64_t work(const Command& c, const CoreLimits&);
 
   // --- stimulus ---------------------------------------------------------------
   // Every coordinate fits COORD_W (signed) and the whole circle, centre +-

@@ -50,7 +50,7 @@ bool Adapter::Reference::next(Move& m) {
   return true;
 }
 
-uint64_t Adapter::work(const Command& c) {
+uint64_t Adapter::work(const Command& c, const CoreLimits&) {
   return std::max<uint64_t>(
       static_cast<uint64_t>(std::llabs(c.delta[0])) + static_cast<uint64_t>(std::llabs(c.delta[1])),
       1);

@@ -46,7 +46,7 @@ struct Adapter : DeltaPayload<Adapter> {
     models::ErrorBound bound_;
   };
   // |dx| + |dy| operations; a zero-length command takes one.
-  static uint64_t work(const Command& c);
+  static uint64_t work(const Command& c, const CoreLimits&);
 
   // --- stimulus ---------------------------------------------------------------
   // Every octant, axis-parallel and vertical lines, zero-length commands,
