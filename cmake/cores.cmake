@@ -50,4 +50,16 @@ hwinterp_core_variant(CORE log_stepper NAME log_stepper_n4
   PARAMS AXES=4 INT_W=10 FRAC_W=30 MUL_K=10 SEG_W=16 POS_W=32 TIM_W=16 FEED_W=16 DEFAULTS ${timing})
 hwinterp_core_variant(CORE log_stepper NAME log_stepper_edge
   PARAMS AXES=4 INT_W=11 FRAC_W=27 MUL_K=7 SEG_W=13 POS_W=27 TIM_W=5 FEED_W=7 DEFAULTS ${timing})
+# motion_top: lines (DDA, ACC_W-bit signed deltas, also the slaved axes'),
+# arcs (PPC rule M, COORD_W-bit signed centre and end, OPS_W-bit operation
+# counts), 3 axes (X Y Z) or 4 (X Y Z A). rtl/motion_top.sv. FEED_W = 24:
+# a part program's feed words need the resolution (at 50 MHz one LSB of a
+# 16-bit word is 763 operations/s, and a 10 mm move at F400 would run 10 %
+# fast; at 24 bits, 3 operations/s).
+hwinterp_core_variant(CORE motion_top NAME motion_top_n3
+  PARAMS AXES=3 ACC_W=32 COORD_W=24 OPS_W=28 POS_W=32 TIM_W=16 FEED_W=24 DEFAULTS ${timing})
+hwinterp_core_variant(CORE motion_top NAME motion_top_n4
+  PARAMS AXES=4 ACC_W=32 COORD_W=24 OPS_W=28 POS_W=32 TIM_W=16 FEED_W=24 DEFAULTS ${timing})
+hwinterp_core_variant(CORE motion_top NAME motion_top_edge
+  PARAMS AXES=3 ACC_W=15 COORD_W=11 OPS_W=14 POS_W=17 TIM_W=5 FEED_W=7 DEFAULTS ${timing})
 hwinterp_finish_variants()

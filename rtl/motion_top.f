@@ -1,0 +1,11 @@
+stepdir_timing.sv
+stepdir_axis.sv
+step_stage.sv
+feed_accum.sv
+magnitude.sv
+dda_norm.sv
+dda_axis.sv
+ppc_line_step.sv
+ppc_arc_prep.sv
+ppc_arc_engine.sv
+motion_top.sv

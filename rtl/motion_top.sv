@@ -1,0 +1,394 @@
+// motion_top: lines and arcs in one core, one command stream tagged line or
+// arc: lines on the DDA engine over all axes (rtl/dda_axis.sv,
+// rtl/dda_norm.sv), arcs on the PPC arc engine (rtl/ppc_arc_engine.sv, rule
+// M) in the selected plane with the other axes slaved to the arc's
+// operations (helices), one shared step/dir stage, a continuous position,
+// moves chained without a gap, a feed word per move.
+// models/motion_top_model.h states the mathematics, move for move.
+//
+// command stream -> buffer A (magnitudes, arc prep) -> buffer B (normalised)
+//                -> DDA engine (every axis) + PPC arc engine (plane axes) -> step_stage
+//
+// Command, taken on a clock where cmd_valid_i && cmd_ready_o:
+//   cmd_arc_i     0: a line, 1: an arc
+//   cmd_delta_i   signed ACC_W-bit steps per axis, axis i at [i*ACC_W +: ACC_W]:
+//                 a line's deltas; an arc's slaved (helical) axes' deltas,
+//                 0 on the two plane axes
+//   cmd_plane_i   the arc's plane: 0 XY (the arc's x = axis 0, y = axis 1),
+//                 1 ZX (x = axis 2, y = axis 0), 2 YZ (x = axis 1, y = axis 2)
+//   cmd_center_i  the arc's centre - start in the plane (I, J), signed COORD_W bits, x first
+//   cmd_end_i     the arc's end - start in the plane, signed COORD_W bits, x first
+//   cmd_ccw_i     the arc's direction: 1 counter-clockwise, 0 clockwise
+//   cmd_ops_i     the arc's operations N (models::motion_arc_ops), the slaved
+//                 axes' modulus; at least every slaved |delta|
+//   cmd_feed_i    the move's feed word: operations per clock = cmd_feed_i / 2^FEED_W
+//                 (>= 2^FEED_W: one a clock)
+// Two buffer entries hold the next commands while one runs, so moves chain
+// without a gap; cmd_ready_o is a register (buffer A empty).
+//
+// Lines: with M = max |delta_i| and n its bit length, 2^n iterations of a DDA
+// (plain preload: an accumulator per axis from 0, modulus 2^n). Arcs: the
+// PPC arc of rule M in the plane, one engine operation per tick (a step of x
+// or y, or the switch to the closing line, which steps neither), and for
+// each slaved axis a Bresenham over the N operations: err starts at
+// floor(N/2), each operation adds |delta|, and err >= N steps the axis (in the
+// sign of delta) and subtracts N, on the same operation as the plane step.
+// Both are the DDA axis of rtl/dda_axis.sv with a general modulus: the
+// accumulator is offset by 2^ACC_W - K (K = 2^n for a line, N for an arc) so
+// its carry is always the top bit, and a carry adds |delta| + 2^ACC_W - K
+// (dc, formed in buffer B: |delta| | hm for a line, |delta| - N for an arc).
+// The arc's plane axes carry a zero delta: their DDA axes never step.
+//
+// Feed: the running move's feed word drives the feed accumulator
+// (rtl/feed_accum.sv: sampled a clock ahead, the phase not cleared between
+// moves; the word of the move that runs on the next clock is the one
+// sampled). feed_i, the shared pin, gates it: 0 holds the move (feed hold),
+// any other value runs every move at its own feed word; the gate, like every
+// feed word, applies from the clock after it is sampled.
+//
+// Step/dir timing, abort and status as every core (rtl/dda_line.sv): the
+// engine stalls while an axis that must step is not ready; abort_i ends the
+// running command and drops the buffered ones; busy_o, done_o (one clock
+// with each completed command's last operation), pos_o.
+//
+// Timing: the engine's advance depends on registers (the carries, the arc
+// engine's state, the stage's readiness, the iteration count) and the feed's
+// tick; every next state is a late choice by advance. Buffer A's work
+// (magnitudes, the arc's prep) starts at the pins, buffer B's (masks, dc) at
+// buffer A.
+//
+// Per-axis vectors are flat with `+:` slices (Yosys 0.23, Icarus 11).
+module motion_top #(
+  parameter int AXES    = 3,   // axes: 3 (X Y Z) or 4 (X Y Z A); the arc planes use axes 0-2
+  parameter int ACC_W   = 32,  // signed line and slaved delta width; the DDA accumulators
+  parameter int COORD_W = 24,  // signed arc coordinate width
+  parameter int OPS_W   = 28,  // arc operation count width (< ACC_W)
+  parameter int POS_W   = 32,  // position counter width (wraps)
+  parameter int TIM_W   = 16,  // width of the step/dir timing settings
+  parameter int FEED_W  = 16   // feed phase width; feed words are FEED_W + 1 bits
+) (
+  input  logic                    clk_i,         // clock
+  input  logic                    rst_ni,        // asynchronous, active low
+  // Command stream
+  input  logic                    cmd_valid_i,   // a command is offered on cmd_*_i
+  output logic                    cmd_ready_o,   // buffer A is free: an offered command is taken
+  input  logic                    cmd_arc_i,     // 0 line, 1 arc
+  input  logic [AXES*ACC_W-1:0]   cmd_delta_i,   // signed steps per axis (an arc's: slaved axes only)
+  input  logic [1:0]              cmd_plane_i,   // arc plane: 0 XY, 1 ZX, 2 YZ
+  input  logic [2*COORD_W-1:0]    cmd_center_i,  // arc centre - start (plane x, y)
+  input  logic [2*COORD_W-1:0]    cmd_end_i,     // arc end - start (plane x, y)
+  input  logic                    cmd_ccw_i,     // arc direction, 1: counter-clockwise
+  input  logic [OPS_W-1:0]        cmd_ops_i,     // arc operations N (>= 1)
+  input  logic [FEED_W:0]         cmd_feed_i,    // the move's operations per clock, / 2^FEED_W
+  // Run-time settings
+  input  logic [FEED_W:0]         feed_i,        // 0: feed hold; else the moves run at their feed words
+  input  logic [TIM_W-1:0]        step_len_i,    // step pulse length, clocks (0 acts as 1)
+  input  logic [TIM_W-1:0]        step_space_i,  // min low time between pulses, clocks
+  input  logic [TIM_W-1:0]        dir_setup_i,   // dir stable before a step rises, clocks
+  input  logic [TIM_W-1:0]        dir_hold_i,    // dir stable after a step falls, clocks
+  input  logic                    abort_i,       // end the move, drop the buffer (one clock)
+  // Step/dir and status
+  output logic [AXES-1:0]         step_o,        // step pulses, axis i in bit i
+  output logic [AXES-1:0]         dir_o,         // 1: negative motion
+  output logic [AXES*POS_W-1:0]   pos_o,         // signed positions, axis i at [i*POS_W +: POS_W]
+  output logic                    busy_o,        // a command buffered or running, or a pulse high
+  output logic                    done_o         // one clock per completed command
+);
+  localparam int PREP_W = 6 * COORD_W + 4;  // the arc's s, e, E (rtl/ppc_arc_prep.sv)
+
+  // ---------------------------------------------------------------------------
+  // Buffer A: the taken command, magnitudes and the arc's prep.
+  logic                  a_valid_q, a_valid_d;
+  logic                  a_arc_q, a_ccw_q;
+  logic [1:0]            a_plane_q;
+  logic [ACC_W-1:0]      a_any_q;  // OR of the magnitudes
+  logic [ACC_W-1:0]      a_negn_q;  // 2^ACC_W - N
+  logic [FEED_W:0]       a_feed_q;
+  logic [PREP_W-1:0]     a_prep_q;
+  logic                  cmd_take;
+  logic                  a_to_b;
+  logic [AXES*ACC_W-1:0] cmd_mag;
+  logic [ACC_W-1:0]      cmd_any;
+  logic [PREP_W-1:0]     cmd_prep;
+
+  assign cmd_ready_o = !a_valid_q;
+  assign cmd_take    = cmd_valid_i && !a_valid_q;
+
+  always_comb begin
+    cmd_any = '0;
+    for (int i = 0; i < AXES; i++) cmd_any = cmd_any | cmd_mag[i*ACC_W +: ACC_W];
+  end
+
+  ppc_arc_prep #(
+    .COORD_W(COORD_W)
+  ) u_prep (
+    .center_i(cmd_center_i),
+    .end_i   (cmd_end_i),
+    .prep_o  (cmd_prep)
+  );
+
+  // ---------------------------------------------------------------------------
+  // Buffer B: the command normalised: a line's iterations after the first
+  // (2^n - 1), the accumulators' first value a0 (hm = 2^ACC_W - 2^n for a
+  // line; 2^ACC_W - ceil(N/2) for an arc, i.e. err = floor(N/2)), and per axis
+  // dc (in the slices below).
+  logic                  b_valid_q, b_valid_d;
+  logic                  b_arc_q, b_ccw_q;
+  logic [1:0]            b_plane_q;
+  logic [ACC_W-1:0]      b_low_q, b_a0_q;
+  logic                  b_low_zero_q;
+  logic [FEED_W:0]       b_feed_q;
+  logic [PREP_W-1:0]     b_prep_q;
+  logic [ACC_W-1:0]      a_low, a_hm, a_top;
+  logic                  load;  // the engine loads buffer B this clock
+
+  dda_norm #(
+    .W(ACC_W)
+  ) u_norm (
+    .any_i(a_any_q),
+    .low_o(a_low),
+    .hm_o (a_hm),
+    .top_o(a_top)
+  );
+
+  // ---------------------------------------------------------------------------
+  // Engine.
+  logic            act_q, act_d;  // a command is running
+  logic            arc_q;  // ...an arc
+  logic [AXES-1:0] on_x_q, on_y_q;  // the axis is the running arc's x / y
+  logic [ACC_W-1:0] left_q, left_d;  // a line's iterations after this one
+  logic            left_zero_q, left_zero_d;
+  logic            pre_load;  // the next add is a load's: buffer B waits and the engine is idle or ends
+  logic [FEED_W:0] feed_q;  // the running move's feed word
+  logic            hold_q;  // feed_i was 0
+  logic            done_q;
+  logic [AXES-1:0] dda_carry, carry, want_valid, want_dir, ready;
+  logic            eng_step_x, eng_step_y, eng_last;
+  logic            unused;  // the half bit (no half preload here)
+  assign unused = ^a_top;
+  logic [1:0]      eng_want_valid, eng_want_dir;
+  logic            cur_last;  // this clock's operation ends the running command
+  logic            tick, stall, advance, last, idle_load, arc_run;
+
+  // The arc engine's last_o is a function of its registers: pre_load needs
+  // no advance.
+  assign cur_last  = arc_q ? eng_last : left_zero_q;
+  assign pre_load  = b_valid_q && (!act_q || cur_last);
+  assign arc_run   = act_q && arc_q;
+  assign stall     = |(carry & ~ready);
+  assign advance   = tick && !stall && !abort_i;
+  assign last      = advance && cur_last;
+  assign load      = pre_load && (!act_q || advance) && !abort_i;
+  assign idle_load = pre_load && !act_q && !abort_i;
+  assign a_to_b    = a_valid_q && !b_valid_q && !abort_i;
+
+  ppc_arc_engine #(
+    .COORD_W(COORD_W)
+  ) u_arc (
+    .clk_i,
+    .rst_ni,
+    .load_i      (load && b_arc_q),
+    .ld_prep_i   (b_prep_q),
+    .ld_ccw_i    (b_ccw_q),
+    .run_i       (arc_run),
+    .advance_i   (advance && arc_run),
+    .step_x_o    (eng_step_x),
+    .step_y_o    (eng_step_y),
+    .want_valid_o(eng_want_valid),
+    .want_dir_o  (eng_want_dir),
+    .last_o      (eng_last)
+  );
+
+  // The feed word of the move on the next clock (pre_load: the next
+  // command's, as it loads if the engine advances), gated by feed_i.
+  feed_accum #(
+    .FEED_W(FEED_W)
+  ) u_feed (
+    .clk_i,
+    .rst_ni,
+    .feed_i    (hold_q ? '0 : (pre_load ? b_feed_q : feed_q)),
+    .run_i     (act_q),
+    .hold_i    (stall),
+    .run_next_i(act_d),
+    .tick_o    (tick)
+  );
+
+  // Next states as advance ? (advancing) : (not), from registers.
+  logic act_adv, act_idle, lz_adv, lz_idle, bv_adv, bv_idle;
+  assign act_adv     = pre_load || !cur_last;
+  assign act_idle    = (act_q && !abort_i) || idle_load;
+  assign lz_adv      = pre_load ? b_low_zero_q : (left_q == ACC_W'(1));
+  assign lz_idle     = idle_load ? b_low_zero_q : left_zero_q;
+  assign bv_adv      = a_to_b || (b_valid_q && !pre_load);
+  assign bv_idle     = !abort_i && (a_to_b || (b_valid_q && !idle_load));
+  assign act_d       = advance ? act_adv : act_idle;
+  assign left_zero_d = advance ? lz_adv : lz_idle;
+  assign left_d      = advance ? (pre_load ? b_low_q : left_q - ACC_W'(1)) :
+                                 (idle_load ? b_low_q : left_q);
+  assign b_valid_d   = advance ? bv_adv : bv_idle;
+  assign a_valid_d   = !abort_i && (cmd_take || (a_valid_q && !a_to_b));
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      a_valid_q    <= 1'b0;
+      a_arc_q      <= 1'b0;
+      a_ccw_q      <= 1'b0;
+      a_plane_q    <= '0;
+      a_any_q      <= '0;
+      a_negn_q     <= '0;
+      a_feed_q     <= '0;
+      a_prep_q     <= '0;
+      b_valid_q    <= 1'b0;
+      b_arc_q      <= 1'b0;
+      b_ccw_q      <= 1'b0;
+      b_plane_q    <= '0;
+      b_low_q      <= '0;
+      b_a0_q       <= '0;
+      b_low_zero_q <= 1'b0;
+      b_feed_q     <= '0;
+      b_prep_q     <= '0;
+      act_q        <= 1'b0;
+      arc_q        <= 1'b0;
+      on_x_q       <= '0;
+      on_y_q       <= '0;
+      left_q       <= '0;
+      left_zero_q  <= 1'b0;
+      feed_q       <= '0;
+      hold_q       <= 1'b1;
+      done_q       <= 1'b0;
+    end else begin
+      a_valid_q <= a_valid_d;
+      if (cmd_take) begin
+        a_arc_q   <= cmd_arc_i;
+        a_ccw_q   <= cmd_ccw_i;
+        a_plane_q <= cmd_plane_i;
+        a_any_q   <= cmd_any;
+        a_negn_q  <= ACC_W'(0) - ACC_W'(cmd_ops_i);
+        a_feed_q  <= cmd_feed_i;
+        a_prep_q  <= cmd_prep;
+      end
+      b_valid_q <= b_valid_d;
+      if (a_to_b) begin
+        b_arc_q      <= a_arc_q;
+        b_ccw_q      <= a_ccw_q;
+        b_plane_q    <= a_plane_q;
+        b_low_q      <= a_arc_q ? '0 : a_low;
+        b_low_zero_q <= a_arc_q || (a_any_q == '0);
+        // An arc: -N >>> 1 = -ceil(N/2).
+        b_a0_q       <= a_arc_q ? {a_negn_q[ACC_W-1], a_negn_q[ACC_W-1:1]} : a_hm;
+        b_feed_q     <= a_feed_q;
+        b_prep_q     <= a_prep_q;
+      end
+      act_q       <= act_d;
+      left_q      <= left_d;
+      left_zero_q <= left_zero_d;
+      if (load) begin
+        arc_q  <= b_arc_q;
+        feed_q <= b_feed_q;
+        for (int i = 0; i < AXES; i++) begin
+          on_x_q[i] <= b_arc_q && (i == (b_plane_q == 2'd0 ? 0 : b_plane_q == 2'd1 ? 2 : 1));
+          on_y_q[i] <= b_arc_q && (i == (b_plane_q == 2'd0 ? 1 : b_plane_q == 2'd1 ? 0 : 2));
+        end
+      end
+      hold_q <= feed_i == '0;
+      done_q <= last;
+    end
+  end
+
+  // ---------------------------------------------------------------------------
+  // Per-axis slices: magnitude, buffers, the DDA axis, and the step request
+  // (the arc engine's on the running arc's plane axes).
+  for (genvar i = 0; i < AXES; i++) begin : g_axis
+    logic [ACC_W-1:0] delta, a_mag_q, b_mag_q;
+    logic [ACC_W:0]   b_dc_q;  // up to 2^ACC_W: a slaved axis that steps every operation
+    logic             cmd_neg, a_neg_q, b_neg_q, neg_q;
+    logic             a_moves_q, b_moves_q, moves_q, moves_d;
+
+    assign delta = cmd_delta_i[i*ACC_W +: ACC_W];
+    magnitude #(
+      .W(ACC_W)
+    ) u_mag (
+      .x_i  (delta),
+      .mag_o(cmd_mag[i*ACC_W +: ACC_W]),
+      .neg_o(cmd_neg)
+    );
+
+    dda_axis #(
+      .W         (ACC_W),
+      .MODULUS_2N(1'b0)
+    ) u_acc (
+      .clk_i,
+      .rst_ni,
+      .pre_i  (pre_load),
+      .ld_i   (load),
+      .en_i   (load || advance),
+      .a0_i   (b_a0_q),
+      .b_mag_i(b_mag_q),
+      .b_dc_i (b_dc_q),
+      .hm_i   ('0),
+      .carry_o(dda_carry[i])
+    );
+
+    assign carry[i]      = dda_carry[i] || (on_x_q[i] && eng_step_x) || (on_y_q[i] && eng_step_y);
+    assign want_valid[i] = on_x_q[i] ? arc_run && eng_want_valid[0] :
+                           on_y_q[i] ? arc_run && eng_want_valid[1] : moves_q;
+    assign want_dir[i]   = on_x_q[i] ? eng_want_dir[0] : on_y_q[i] ? eng_want_dir[1] : neg_q;
+    assign moves_d       = advance ? (pre_load ? b_moves_q : moves_q && !cur_last) :
+                                     (idle_load ? b_moves_q : moves_q && !abort_i);
+
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        a_mag_q   <= '0;
+        a_neg_q   <= 1'b0;
+        a_moves_q <= 1'b0;
+        b_mag_q   <= '0;
+        b_dc_q    <= '0;
+        b_neg_q   <= 1'b0;
+        b_moves_q <= 1'b0;
+        neg_q     <= 1'b0;
+        moves_q   <= 1'b0;
+      end else begin
+        if (cmd_take) begin
+          a_mag_q   <= cmd_mag[i*ACC_W +: ACC_W];
+          a_neg_q   <= cmd_neg;
+          a_moves_q <= delta != '0;
+        end
+        if (a_to_b) begin
+          b_mag_q   <= a_mag_q;
+          // dc = |delta| + 2^ACC_W - K: | hm for a line, - N for an arc
+          // (|delta| <= N: 2^ACC_W at most).
+          b_dc_q    <= a_arc_q ? {1'b0, a_mag_q} + {1'b0, a_negn_q} : {1'b0, a_mag_q | a_hm};
+          b_neg_q   <= a_neg_q;
+          b_moves_q <= a_moves_q;
+        end
+        if (load) neg_q <= b_neg_q;
+        moves_q <= moves_d;
+      end
+    end
+  end
+
+  // ---------------------------------------------------------------------------
+  // Output stage: step/dir timing and position counters.
+  step_stage #(
+    .AXES (AXES),
+    .POS_W(POS_W),
+    .TIM_W(TIM_W)
+  ) u_out (
+    .clk_i,
+    .rst_ni,
+    .step_len_i,
+    .step_space_i,
+    .dir_setup_i,
+    .dir_hold_i,
+    .want_valid_i(want_valid),
+    .want_dir_i  (want_dir),
+    .fire_i      ({AXES{advance}} & carry),
+    .ready_o     (ready),
+    .step_o,
+    .dir_o,
+    .pos_o
+  );
+
+  assign busy_o = act_q || a_valid_q || b_valid_q || (|step_o);
+  assign done_o = done_q;
+endmodule
