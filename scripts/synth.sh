@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
 # Synthesis handoff flow: per core variant, resources and Fmax.
 #
-# Usage: scripts/synth.sh [--variant NAME]... [--out DIR] [--generic-only]
+# Usage: scripts/synth.sh [--variant NAME]... [--match REGEX] [--out DIR] [--generic-only]
 #                         [--seeds "1 2 3"] [--freq MHZ] [--check-netlist | --no-check-netlist]
 #                         [--commands N]
 #
 #   --variant NAME   a variant of <build>/generated/variants.txt (repeatable;
 #                    default: all of them)
+#   --match REGEX    only the variants whose name matches REGEX (bash =~),
+#                    e.g. '_edge$': one narrow variant of every core (CI's
+#                    netlist check)
 #   --out DIR        output directory (default <build>/reports/synth)
 #   --generic-only   only the Yosys generic synthesis (seconds; a quick check
 #                    that the flow reads the RTL)
@@ -46,6 +49,7 @@ die() { echo "synth: $*" >&2; exit 1; }
 usage() { sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2; exit 2; }
 
 variants=()
+match=""
 out=""
 generic_only=0
 seeds="1 2 3"
@@ -56,6 +60,7 @@ pnr_timeout=900
 while [ $# -gt 0 ]; do
   case "$1" in
     --variant) [ $# -ge 2 ] || usage; variants+=("$2"); shift 2 ;;
+    --match) [ $# -ge 2 ] || usage; match=$2; shift 2 ;;
     --out) [ $# -ge 2 ] || usage; out=$2; shift 2 ;;
     --generic-only) generic_only=1; shift ;;
     --seeds) [ $# -ge 2 ] || usage; seeds=$2; shift 2 ;;
@@ -128,6 +133,12 @@ else
   for v in "${variants[@]}"; do
     [ -n "${vline[$v]+x}" ] || die "unknown variant '$v' (variants.txt has: ${all[*]})"
   done
+fi
+if [ -n "$match" ]; then
+  kept=()
+  for v in "${variants[@]}"; do [[ $v =~ $match ]] && kept+=("$v"); done
+  [ ${#kept[@]} -gt 0 ] || die "--match '$match' matches no variant (of: ${variants[*]})"
+  variants=("${kept[@]}")
 fi
 
 # The RTL files of a core, from rtl/<core>.f (the list Verilator gets too).
@@ -206,7 +217,9 @@ for variant in "${variants[@]}"; do
       synth_ice40 -top $core; tee -q -o $vdir/ice40_core_stat.json stat -json"
 
     # 3. The harness, generated from the core's ports, mapped once and placed per seed.
+    #    (rename -top: chparam may leave the top as $paramod$<hash>\<core>.)
     run_step ports "$vdir/ports.log" yosys -p "$read_rtl; $chparam $core; hierarchy -top $core; proc;
+      rename -top $core;
       write_json $vdir/ports.json"
     run_step make_harness "$vdir/make_harness.log" sh -c \
       'python3 "$1" "$2" "$3" $4 >"$5"' _ "$root/scripts/synth/make_harness.py" "$vdir/ports.json" \
