@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <deque>
 #include <fstream>
 #include <functional>
@@ -211,6 +212,15 @@ class Program final : public tb::ItemSource<MotionAdapter>, public tb::MoveObser
   ContourMax max_;
   std::vector<uint64_t> end_mismatches_;
 };
+
+// This process's peak resident memory in KiB (VmHWM: since exec, so not the
+// parent's), 0 where /proc does not say.
+uint64_t peak_rss_kib() {
+  std::ifstream in("/proc/self/status");
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("VmHWM:", 0) == 0) return std::strtoull(line.c_str() + 6, nullptr, 10);
+  return 0;
+}
 
 // The motion_top variant with this many axes or the one named, as a typed run.
 using RunMaker = std::function<std::unique_ptr<tb::BenchRun>(std::vector<tb::Case<MotionAdapter>>,
@@ -443,6 +453,7 @@ int run_gcode(int argc, char** argv, int first) {
   report["max_contour_error_line"] = m.line;
   report["visited_points"] = prog->points();
   report["end_mismatches"] = prog->end_mismatches().size();
+  report["peak_rss_kib"] = peak_rss_kib();
 
   if (moves_csv) {
     moves_csv->close();
