@@ -60,26 +60,26 @@ module dda_line #(
   parameter int TIM_W  = 16,  // width of the step/dir timing settings
   parameter int FEED_W = 16   // feed phase width; feed_i is FEED_W + 1 bits
 ) (
-  input  logic                   clk_i,
-  input  logic                   rst_ni,
+  input  logic                   clk_i,           // clock
+  input  logic                   rst_ni,          // asynchronous, active low
   // Command stream
-  input  logic                   cmd_valid_i,
-  output logic                   cmd_ready_o,
+  input  logic                   cmd_valid_i,     // a command is offered on cmd_*_i
+  output logic                   cmd_ready_o,     // the buffer is free: an offered command is taken
   input  logic [AXES*ACC_W-1:0]  cmd_delta_i,     // signed steps, axis i at [i*ACC_W +: ACC_W]
   // Run-time settings
   input  logic [FEED_W:0]        feed_i,          // iterations per clock = feed_i / 2^FEED_W
   input  logic                   half_preload_i,  // sampled with each command
-  input  logic [TIM_W-1:0]       step_len_i,
-  input  logic [TIM_W-1:0]       step_space_i,
-  input  logic [TIM_W-1:0]       dir_setup_i,
-  input  logic [TIM_W-1:0]       dir_hold_i,
+  input  logic [TIM_W-1:0]       step_len_i,      // step pulse length, clocks (0 acts as 1)
+  input  logic [TIM_W-1:0]       step_space_i,    // min low time between pulses, clocks
+  input  logic [TIM_W-1:0]       dir_setup_i,     // dir stable before a step rises, clocks
+  input  logic [TIM_W-1:0]       dir_hold_i,      // dir stable after a step falls, clocks
   input  logic                   abort_i,         // end the move, drop the buffer (one clock)
   // Step/dir and status
-  output logic [AXES-1:0]        step_o,
+  output logic [AXES-1:0]        step_o,          // step pulses, axis i in bit i
   output logic [AXES-1:0]        dir_o,           // 1: negative motion
   output logic [AXES*POS_W-1:0]  pos_o,           // axis i at [i*POS_W +: POS_W]
-  output logic                   busy_o,
-  output logic                   done_o
+  output logic                   busy_o,          // a command buffered or running, or a pulse high
+  output logic                   done_o           // one clock per completed command
 );
   // ---------------------------------------------------------------------------
   // Buffer A: the taken command as magnitudes, signs and the OR of the

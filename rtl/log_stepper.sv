@@ -67,29 +67,29 @@ module log_stepper #(
   parameter int TIM_W  = 16,  // step/dir timing settings width
   parameter int FEED_W = 16   // feed accumulator width
 ) (
-  input  logic                  clk_i,
-  input  logic                  rst_ni,
+  input  logic                  clk_i,               // clock
+  input  logic                  rst_ni,              // asynchronous, active low
   // Command stream: one curve per command
-  input  logic                  cmd_valid_i,
-  output logic                  cmd_ready_o,
+  input  logic                  cmd_valid_i,         // a command is offered on cmd_*_i
+  output logic                  cmd_ready_o,         // the buffer is free: an offered command is taken
   input  logic [INT_W+FRAC_W-1:0]      cmd_b_i,      // b (1/mm)
   input  logic [INT_W+FRAC_W-1:0]      cmd_ab_i,     // a b (rad/mm)
   input  logic [INT_W+FRAC_W-1:0]      cmd_dl_i,     // dl (mm)
   input  logic [INT_W+FRAC_W-1:0]      cmd_x_end_i,  // stop at an even point with X >= x_end (mm)
   input  logic [4*(INT_W+FRAC_W)-1:0]  cmd_k_i,      // steps per unit / 2^16, axis i at [i*W +: W]
   // Run-time settings
-  input  logic [FEED_W:0]       feed_i,
-  input  logic [TIM_W-1:0]      step_len_i,
-  input  logic [TIM_W-1:0]      step_space_i,
-  input  logic [TIM_W-1:0]      dir_setup_i,
-  input  logic [TIM_W-1:0]      dir_hold_i,
+  input  logic [FEED_W:0]       feed_i,              // operations per clock = feed_i / 2^FEED_W
+  input  logic [TIM_W-1:0]      step_len_i,          // step pulse length, clocks (0 acts as 1)
+  input  logic [TIM_W-1:0]      step_space_i,        // min low time between pulses, clocks
+  input  logic [TIM_W-1:0]      dir_setup_i,         // dir stable before a step rises, clocks
+  input  logic [TIM_W-1:0]      dir_hold_i,          // dir stable after a step falls, clocks
   input  logic                  abort_i,  // end the curve, drop its segments (one clock)
   // Step/dir and status
-  output logic [AXES-1:0]       step_o,
-  output logic [AXES-1:0]       dir_o,
-  output logic [AXES*POS_W-1:0] pos_o,
-  output logic                  busy_o,
-  output logic                  done_o
+  output logic [AXES-1:0]       step_o,              // step pulses, axis i in bit i
+  output logic [AXES-1:0]       dir_o,               // 1: negative motion
+  output logic [AXES*POS_W-1:0] pos_o,               // signed positions, axis i at [i*POS_W +: POS_W]
+  output logic                  busy_o,              // a command buffered or running, or a pulse high
+  output logic                  done_o               // one clock per completed command
 );
   localparam int W         = INT_W + FRAC_W;
   localparam int MulCyc    = (W + MUL_K - 1) / MUL_K;
