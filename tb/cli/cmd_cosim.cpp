@@ -103,34 +103,20 @@ int run_cosim(int argc, char** argv, int first) {
   for (const char* o : {"seed", "with-aborts", "with-holds"})
     if (args.given(o) && !args.given("random"))
       throw UsageError(std::string("--") + o + " goes with --random");
-  if (args.given("vcd") && args.given("fst")) throw UsageError("give one of --vcd and --fst");
-  if (args.given("trace-window") && !args.given("vcd") && !args.given("fst"))
-    throw UsageError("--trace-window " + args.str("trace-window") + " needs --vcd or --fst");
 
   tb::BenchOptions options;
   options.mode = mode;
   if (args.given("random"))
     options.seed = args.given("seed") ? args.seed("seed") : std::random_device{}();
   options.faults = parse_injection(args);
-  options.trace_path = args.given("vcd")   ? args.str("vcd")
-                       : args.given("fst") ? args.str("fst")
-                                           : "";
+  trace_from_args(args, options);
   if (args.given("dump-frames")) options.frames_path = args.str("dump-frames");
   if (args.given("path-csv")) options.path_csv = args.str("path-csv");
-  if (args.given("trace-window"))
-    options.trace_window = static_cast<uint64_t>(args.integer("trace-window", 1, 100000000));
   if (args.given("abort-at"))
     options.abort_at = static_cast<uint64_t>(args.integer("abort-at", 1, INT64_MAX));
 
   // Every output can be written, or nothing runs.
-  for (const char* o : {"vcd", "fst", "path-csv", "dump-frames"}) {
-    if (!args.given(o)) continue;
-    try {
-      check_writable(args.str(o));
-    } catch (const std::exception& e) {
-      throw UsageError(std::string("--") + o + ": " + e.what());
-    }
-  }
+  check_outputs_writable(args, {"vcd", "fst", "path-csv", "dump-frames"});
   // Validates the stimulus and opens every output file before the run.
   const std::unique_ptr<tb::BenchRun> run = variant.from_args(args, options);
   std::cout << "hwinterp cosim: " << core->name << " (" << variant.limits.variant << "), mode "

@@ -298,9 +298,6 @@ int run_gcode(int argc, char** argv, int first) {
   const gcode::FeedMode feed_mode = args.choice("feed", {"full", "programmed"}) == "full"
                                         ? gcode::FeedMode::kFull
                                         : gcode::FeedMode::kProgrammed;
-  if (args.given("vcd") && args.given("fst")) throw UsageError("give one of --vcd and --fst");
-  if (args.given("trace-window") && !args.given("vcd") && !args.given("fst"))
-    throw UsageError("--trace-window " + args.str("trace-window") + " needs --vcd or --fst");
   const gcode::Machine machine =
       args.given("machine") ? gcode::load_machine(args.str("machine")) : gcode::Machine{};
 
@@ -336,14 +333,9 @@ int run_gcode(int argc, char** argv, int first) {
   widths.feed_w = l.feed_w;
 
   // Every output can be written, or nothing runs.
-  for (const char* o : {"moves-csv", "plot", "vcd", "fst"}) {
-    if (!args.given(o)) continue;
-    try {
-      check_writable(args.str(o));
-    } catch (const std::exception& e) {
-      throw UsageError(std::string("--") + o + ": " + e.what());
-    }
-  }
+  tb::BenchOptions options;
+  trace_from_args(args, options);
+  check_outputs_writable(args, {"moves-csv", "plot", "vcd", "fst"});
   std::unique_ptr<std::ofstream> moves_csv, points_csv;
   if (args.given("moves-csv")) moves_csv = std::make_unique<std::ofstream>(args.str("moves-csv"));
   const std::string points_path = args.given("plot") ? args.str("plot") + ".points.csv" : "";
@@ -365,13 +357,7 @@ int run_gcode(int argc, char** argv, int first) {
                        static_cast<uint32_t>(machine.timing.dir_hold)};
   c.more = prog;
 
-  tb::BenchOptions options;
   options.mode = mode;
-  options.trace_path = args.given("vcd")   ? args.str("vcd")
-                       : args.given("fst") ? args.str("fst")
-                                           : "";
-  if (args.given("trace-window"))
-    options.trace_window = static_cast<uint64_t>(args.integer("trace-window", 1, 100000000));
   options.progress_every = static_cast<uint64_t>(args.integer("progress", 0, INT64_MAX));
   options.observer = prog.get();
   std::vector<tb::Case<MotionAdapter>> cases;

@@ -46,6 +46,28 @@ void maybe_write_json(const Args& args, const Json& report) {
   }
 }
 
+void check_outputs_writable(const Args& args, std::initializer_list<const char*> options) {
+  for (const char* o : options) {
+    if (!args.given(o)) continue;
+    try {
+      check_writable(args.str(o));
+    } catch (const std::exception& e) {
+      throw UsageError(std::string("--") + o + ": " + e.what());
+    }
+  }
+}
+
+void trace_from_args(const Args& args, tb::BenchOptions& options) {
+  if (args.given("vcd") && args.given("fst")) throw UsageError("give one of --vcd and --fst");
+  if (args.given("trace-window") && !args.given("vcd") && !args.given("fst"))
+    throw UsageError("--trace-window " + args.str("trace-window") + " needs --vcd or --fst");
+  options.trace_path = args.given("vcd")   ? args.str("vcd")
+                       : args.given("fst") ? args.str("fst")
+                                           : "";
+  if (args.given("trace-window"))
+    options.trace_window = static_cast<uint64_t>(args.integer("trace-window", 1, 100000000));
+}
+
 void write_text_file(const std::string& path, const std::string& text, const std::string& option) {
   std::ofstream out(path);
   out << text;

@@ -5,10 +5,12 @@
 #pragma once
 
 #include <functional>
+#include <initializer_list>
 #include <string>
 #include <vector>
 
 #include "tb/cli/cli_args.h"
+#include "tb/lockstep/bench_options.h"
 #include "tb/report/json.h"
 #include "tb/report/output_path.h"
 
@@ -40,6 +42,14 @@ bool parse_or_help(Args& args, int argc, char** argv, int first);
 
 // Writes the --json report when asked. Throws UsageError when the file can't be written.
 void maybe_write_json(const Args& args, const Json& report);
+
+// Every output option of `options` that was given names a path that can be
+// written; else a UsageError naming the option, before anything runs.
+void check_outputs_writable(const Args& args, std::initializer_list<const char*> options);
+
+// --vcd FILE / --fst FILE (one at most) and --trace-window N (only with one
+// of them) into the bench options.
+void trace_from_args(const Args& args, tb::BenchOptions& options);
 
 // Writes `text` to `path`; throws UsageError naming `option` and the path when
 // it cannot be written (a failed flush included).
