@@ -191,14 +191,13 @@ uint64_t cycle_budget(const Case<A>& c, const CoreLimits& limits) {
   using Kind = typename Item<A>::Kind;
   // Worst case per engine operation: a full feed period plus one complete
   // step/dir timing round (len + space + setup + hold) of stall.
-  auto round = [](const StepdirTiming& t) { return timing_round(t); };
   uint64_t min_feed = c.settings.feed ? c.settings.feed : limits.full_feed();
-  uint64_t max_round = round(c.settings.timing);
+  uint64_t max_round = timing_round(c.settings.timing);
   uint64_t budget = 64, operations = 0;
   for (const auto& it : c.items) {
     if (it.kind == Kind::kSettings) {
       if (it.settings.feed) min_feed = std::min(min_feed, it.settings.feed);
-      max_round = std::max(max_round, round(it.settings.timing));
+      max_round = std::max(max_round, timing_round(it.settings.timing));
     } else if (it.kind == Kind::kGap) {
       budget += it.cycles;
     } else if (it.kind == Kind::kCommand) {
