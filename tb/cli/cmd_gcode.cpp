@@ -11,7 +11,6 @@
 // Memory does not grow with the program: moves, commands and checks stream.
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <deque>
@@ -21,7 +20,6 @@
 #include <map>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <type_traits>
 
 #include "hwinterp_configs.h"
@@ -58,7 +56,6 @@ struct Pending {
 struct ContourMax {
   double mm = 0, steps = 0;
   uint64_t move = 0, line = 0;
-  std::array<int64_t, 6> at{};
 };
 
 // Streams the compiler's commands into the bench, and follows the moves the
@@ -115,7 +112,6 @@ class Program final : public tb::ItemSource<MotionAdapter>, public tb::MoveObser
       max_.steps = e.steps;
       max_.move = p->move;
       max_.line = p->line;
-      for (size_t i = 0; i < at.size() && i < 6; ++i) max_.at[i] = at[i];
     }
     if (points_csv_) {
       *points_csv_ << p->move;
@@ -144,7 +140,6 @@ class Program final : public tb::ItemSource<MotionAdapter>, public tb::MoveObser
   const gcode::ReaderStats& reader_stats() const { return source_->stats(); }
   const ContourMax& max() const { return max_; }
   uint64_t points() const { return points_; }
-  uint64_t rows() const { return rows_; }
 
   // The rows of every reported move whose last command the core completed.
   void flush_rows() {
@@ -173,7 +168,6 @@ class Program final : public tb::ItemSource<MotionAdapter>, public tb::MoveObser
       reached_.erase(r.index);
       move_max_.erase(r.index);
       reports_.pop_front();
-      ++rows_;
     }
   }
   const std::vector<uint64_t>& end_mismatches() const { return end_mismatches_; }
@@ -208,7 +202,7 @@ class Program final : public tb::ItemSource<MotionAdapter>, public tb::MoveObser
   models::LatticePoint last_reached_;  // where the last completed command ended (the origin first)
   std::shared_ptr<const gcode::ContourPath> path_;
   uint64_t path_move_ = 0;
-  uint64_t commands_ = 0, points_ = 0, rows_ = 0;
+  uint64_t commands_ = 0, points_ = 0;
   ContourMax max_;
   std::vector<uint64_t> end_mismatches_;
 };
