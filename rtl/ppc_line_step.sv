@@ -11,11 +11,14 @@
 // exactly. -|dy| <= F < |dx| throughout, so F needs MAG_W + 1 signed bits.
 // A zero-length line has one operation that steps nothing (last_o at once).
 //
-// Timing: every output is a shallow function of the registers (two reduction
-// ORs, a sign bit); an operation is one MAG_W+1-bit add with carry-in and two
-// decrements.
+// Timing: the flags "x has steps left", "y has steps left" and "at most one
+// step left in total" are registers, decided a clock ahead from the counters
+// (each is the reduction of the counters it stands for, kept equal to it at
+// every clock), so every output is one LUT of registers (a flag, F's sign):
+// the caller's stall/advance logic never waits on a MAG_W-bit reduction. An
+// operation is one MAG_W+1-bit add with carry-in and two decrements.
 module ppc_line_step #(
-  parameter int MAG_W = 32  // width of the magnitudes |dx|, |dy| (unsigned)
+  parameter int MAG_W = 32  // width of the magnitudes |dx|, |dy| (unsigned), >= 3
 ) (
   input  logic             clk_i,      // clock
   input  logic             rst_ni,     // asynchronous, active low
@@ -32,37 +35,60 @@ module ppc_line_step #(
   logic [MAG_W-1:0] ax_q, ay_q;  // |dx|, |dy| of the running line
   logic [MAG_W-1:0] xl_q, yl_q;  // steps left per axis
   logic [MAG_W:0]   f_q, f_d;  // F, two's complement
+  logic             x_left_q, y_left_q;  // |xl_q, |yl_q
+  logic             last_q, last_d;  // xl_q + yl_q <= 1
   logic             pick_x;  // the rule chooses x (it steps only if x has steps left)
+  logic             ld_last;  // the loaded line has at most one step
+  logic             xl_le2, yl_le2;  // xl_q <= 2, yl_q <= 2
 
-  assign x_left_o = |xl_q;
-  assign y_left_o = |yl_q;
-  assign pick_x   = (!f_q[MAG_W] && x_left_o) || !y_left_o;
-  assign step_x_o = pick_x && x_left_o;
-  assign step_y_o = !pick_x;  // implies y_left_o
+  assign x_left_o = x_left_q;
+  assign y_left_o = y_left_q;
+  assign pick_x   = (!f_q[MAG_W] && x_left_q) || !y_left_q;
+  assign step_x_o = pick_x && x_left_q;
+  assign step_y_o = !pick_x;  // implies y_left_q
   // At most one step left in total (none: a zero-length line).
-  assign last_o   = !(x_left_o && y_left_o) && (xl_q[MAG_W-1:1] == '0) &&
-                    (yl_q[MAG_W-1:1] == '0);
+  assign last_o   = last_q;
 
   // x step: F - |dy| = F + ~|dy| + 1; y step: F + |dx|. One adder.
   assign f_d = f_q + (pick_x ? ~{1'b0, ay_q} : {1'b0, ax_q}) + {{MAG_W{1'b0}}, pick_x};
 
+  // The flags a clock ahead. After one step the total left is at most one
+  // exactly when it is at most two now: xl + yl <= 2.
+  assign ld_last = !(|load_ax_i && |load_ay_i) && (load_ax_i[MAG_W-1:1] == '0) &&
+                   (load_ay_i[MAG_W-1:1] == '0);
+  assign xl_le2  = (xl_q[MAG_W-1:2] == '0) && !(xl_q[1] && xl_q[0]);
+  assign yl_le2  = (yl_q[MAG_W-1:2] == '0) && !(yl_q[1] && yl_q[0]);
+  assign last_d  = xl_le2 && yl_le2 && !(xl_q[1] && y_left_q) && !(yl_q[1] && x_left_q);
+
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      ax_q <= '0;
-      ay_q <= '0;
-      xl_q <= '0;
-      yl_q <= '0;
-      f_q  <= '0;
+      ax_q     <= '0;
+      ay_q     <= '0;
+      xl_q     <= '0;
+      yl_q     <= '0;
+      f_q      <= '0;
+      x_left_q <= 1'b0;
+      y_left_q <= 1'b0;
+      last_q   <= 1'b1;
     end else if (load_i) begin
-      ax_q <= load_ax_i;
-      ay_q <= load_ay_i;
-      xl_q <= load_ax_i;
-      yl_q <= load_ay_i;
-      f_q  <= '0;
+      ax_q     <= load_ax_i;
+      ay_q     <= load_ay_i;
+      xl_q     <= load_ax_i;
+      yl_q     <= load_ay_i;
+      f_q      <= '0;
+      x_left_q <= |load_ax_i;
+      y_left_q <= |load_ay_i;
+      last_q   <= ld_last;
     end else if (advance_i && (step_x_o || step_y_o)) begin
-      f_q <= f_d;
-      if (step_x_o) xl_q <= xl_q - MAG_W'(1);
-      else yl_q <= yl_q - MAG_W'(1);
+      f_q    <= f_d;
+      last_q <= last_d;
+      if (step_x_o) begin
+        xl_q     <= xl_q - MAG_W'(1);
+        x_left_q <= |xl_q[MAG_W-1:1];  // xl_q >= 1: xl_q - 1 != 0 iff xl_q >= 2
+      end else begin
+        yl_q     <= yl_q - MAG_W'(1);
+        y_left_q <= |yl_q[MAG_W-1:1];
+      end
     end
   end
 endmodule
