@@ -200,6 +200,8 @@ for variant in "${variants[@]}"; do
   {
     printf 'variant\t%s\ncore\t%s\nparams\t%s\n' "$variant" "$core" "$params_kv"
     printf 'generic_only\t%s\nseeds\t%s\nfreq\t%s\ncheck\t%s\n' "$generic_only" "${seed_list[*]}" "$freq" "$check"
+    printf 'date\t%s\ngit\t%s\n' "$(date -u +%Y-%m-%d)" \
+      "$(git -C "$root" describe --always --dirty 2>/dev/null || echo unknown)"
     printf 'yosys\t%s\nnextpnr\t%s\n' "$(yosys -V)" \
       "$(nextpnr-ice40 --version 2>&1 | head -n1 || true)"
   } >"$vdir/info.tsv"

@@ -9,10 +9,13 @@ frequency for clock" line is the Fmax; the packer lines give the placed LUTs
 and flip-flops) and nextpnr --report files (utilisation, critical path).
 Writes OUT_DIR/synth.json and OUT_DIR/synth.md and prints the markdown.
 """
+import hashlib
 import json
 import os
 import re
 import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 FMAX = re.compile(r"Max frequency for clock '([^']*)': ([0-9.]+) MHz \((PASS|FAIL) at ([0-9.]+) MHz\)")
 PACK = {
@@ -57,6 +60,7 @@ def ice40(by_type):
         "lut4": by_type.get("SB_LUT4", 0),
         "carry": by_type.get("SB_CARRY", 0),
         "ff": sum(n for t, n in by_type.items() if t.startswith("SB_DFF")),
+        "bram": sum(n for t, n in by_type.items() if t.startswith("SB_RAM40")),
     }
 
 
@@ -132,6 +136,21 @@ def package_pins(device, package):
     return n or None
 
 
+def rtl_digest(core, root=ROOT):
+    """SHA-256 over the RTL files of rtl/<core>.f, in list order (names and contents).
+
+    Recorded with every result, so a published figure can be told apart from the RTL it
+    no longer describes (scripts/synth/publish.py --check)."""
+    h = hashlib.sha256()
+    with open(os.path.join(root, "rtl", core + ".f")) as f:
+        names = [l.strip() for l in f if l.strip() and not l.startswith("#")]
+    for name in names:
+        h.update(name.encode() + b"\0")
+        with open(os.path.join(root, "rtl", name), "rb") as g:
+            h.update(g.read())
+    return h.hexdigest()
+
+
 def variant_result(out, variant):
     vdir = os.path.join(out, variant)
     info = read_tsv(os.path.join(vdir, "info.tsv"))
@@ -141,6 +160,9 @@ def variant_result(out, variant):
         "params": dict(kv.split("=", 1) for kv in info["params"].split()),
         "tools": {"yosys": info.get("yosys", ""), "nextpnr": info.get("nextpnr", "")},
         "times_s": read_times(os.path.join(vdir, "times.tsv")),
+        "rtl_sha256": rtl_digest(info["core"]),
+        "date": info.get("date", ""),
+        "git": info.get("git", ""),
     }
     g = cells(os.path.join(vdir, "generic_stat.json"))
     res["generic"] = {

@@ -1,0 +1,218 @@
+#!/usr/bin/env python3
+"""Publishes synthesis results: docs/synth.json and README's synthesis table.
+
+Usage: publish.py [--check] [--variants FILE] [SYNTH_JSON...]
+
+  SYNTH_JSON    a synth.json written by scripts/synth.sh (synth_report.py); its
+                full (place-and-route) results replace the published ones of the
+                same variants in docs/synth.json. Results of --generic-only runs
+                are refused: the table needs the iCE40 figures.
+  --variants F  the build's generated/variants.txt: every variant it lists must
+                be published, and no other (checked with --check)
+  --check       write nothing; exit 1 if README's table is not what docs/synth.json
+                renders, if a published variant was measured on RTL other than
+                today's rtl/<core>.f files (rtl_sha256), or if a variant is missing
+
+Without --check (and after merging), README.md's text between the two
+`synth-table` marker lines is rewritten from docs/synth.json: no figure in
+that table is written by hand.
+
+Exit status: 0 done / consistent, 1 inconsistent (names each variant), 2 bad input.
+"""
+import json
+import os
+import re
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from synth_report import ROOT, rtl_digest  # noqa: E402
+
+PUBLISHED = os.path.join(ROOT, "docs", "synth.json")
+README = os.path.join(ROOT, "README.md")
+BEGIN = "<!-- synth-table: written by scripts/synth/publish.py from docs/synth.json; do not edit -->"
+END = "<!-- end synth-table -->"
+# The cores the issue-12 target (100 MHz on HX8K at every seed) is set for; log_stepper's own
+# aim is 40 MHz (issue 9).
+TARGET_MHZ = {"log_stepper": 40.0}
+DEFAULT_TARGET_MHZ = 100.0
+
+
+def fail(msg, code=2):
+    sys.stderr.write("publish: %s\n" % msg)
+    sys.exit(code)
+
+
+def load(path):
+    try:
+        with open(path) as f:
+            d = json.load(f)
+    except (OSError, ValueError) as e:
+        fail("cannot read %s: %s" % (path, e))
+    if not isinstance(d, dict) or not isinstance(d.get("variants"), list):
+        fail("%s has no 'variants' list" % path)
+    return d["variants"]
+
+
+def short(name):
+    """A readable register or cell name: without the pin harness's u_core. and nextpnr's
+    _SB_... mapping suffix."""
+    name = re.sub(r"^u_core\.", "", name)
+    return re.sub(r"_SB_\w+.*$", "", name)
+
+
+def path_text(cp):
+    if not cp:
+        return "-"
+    steps = "%d LUT" % cp["lut_levels"]
+    if cp["carry_steps"]:
+        steps += " + %d carry" % cp["carry_steps"]
+    return "`%s` -> `%s` (%s; %.1f ns logic, %.1f ns routing)" % (
+        short(cp["from_net"]), short(cp["to_cell"]), steps, cp["logic_ns"], cp["routing_ns"])
+
+
+def target(r):
+    return TARGET_MHZ.get(r["core"], DEFAULT_TARGET_MHZ)
+
+
+def per_axis_rows(results):
+    """LUT4/carry/FF per axis from two variants of one core that differ only in AXES."""
+    rows = []
+    for i, a in enumerate(results):
+        for b in results[i + 1:]:
+            if a["core"] != b["core"]:
+                continue
+            pa = {k: v for k, v in a["params"].items() if k != "AXES"}
+            pb = {k: v for k, v in b["params"].items() if k != "AXES"}
+            na, nb = int(a["params"]["AXES"]), int(b["params"]["AXES"])
+            if pa != pb or na == nb:
+                continue
+            lo, hi = (a, b) if na < nb else (b, a)
+            d = abs(nb - na)
+            per = {k: (hi["ice40_core"][k] - lo["ice40_core"][k]) / d
+                   for k in ("lut4", "carry", "ff")}
+            rows.append("| `%s` | `%s` - `%s`, / %d | %.0f / %.0f / %.0f |" % (
+                a["core"], hi["variant"], lo["variant"], d, per["lut4"], per["carry"], per["ff"]))
+    return rows
+
+
+def render(results):
+    seeds = sorted({p["seed"] for r in results for p in r["harness"]["hx8k"]})
+    out = [BEGIN, "",
+           "| variant | iCE40 core LUT4 / CARRY / FF / BRAM | HX8K Fmax, seeds %s (MHz) | target |"
+           " critical path, first seed: from -> to | UP5K (sg48), seed %d | measured |" % (
+               "/".join(str(s) for s in seeds), results[0]["up5k"]["seed"]),
+           "|---|---|---|---|---|---|---|"]
+    missed = []
+    for r in results:
+        c, h, u = r["ice40_core"], r["harness"], r["up5k"]
+        fm = " / ".join("%.2f" % p["fmax_mhz"] if "fmax_mhz" in p else "no route" for p in h["hx8k"])
+        t = target(r)
+        ok = h["fmax_min_mhz"] is not None and h["fmax_min_mhz"] >= t and \
+            all("fmax_mhz" in p for p in h["hx8k"])
+        if not ok:
+            missed.append(r["variant"])
+        if u["fits"]:
+            up = "fits, %s of %s LC, %.2f MHz" % (u.get("lc_used"), u.get("lc_available"),
+                                                   u.get("fmax_mhz", 0))
+        else:
+            up = "does not fit (%s LUT4 with the harness)" % u.get("lut4", "?")
+        out.append("| `%s` | %d / %d / %d / %d | %s | %d MHz: %s | %s | %s | %s, %s |" % (
+            r["variant"], c["lut4"], c["carry"], c["ff"], c.get("bram", 0), fm, t,
+            "met" if ok else "missed", path_text(h["hx8k"][0].get("critical_path")), up,
+            r.get("date", "?"), r.get("git", "?")))
+    axis = per_axis_rows(results)
+    if axis:
+        out += ["", "Per axis (two variants of a core that differ only in `AXES`):", "",
+                "| core | from | LUT4 / CARRY / FF per axis |", "|---|---|---|"] + axis
+    out += ["", "Target missed by: %s." % (", ".join("`%s`" % v for v in missed) or "none"),
+            "", END]
+    return "\n".join(out)
+
+
+def readme_parts():
+    with open(README) as f:
+        text = f.read()
+    if text.count(BEGIN) != 1 or text.count(END) != 1 or text.index(BEGIN) > text.index(END):
+        fail("README.md needs exactly one pair of synth-table markers:\n  %s\n  %s" % (BEGIN, END))
+    head, rest = text.split(BEGIN, 1)
+    body, tail = rest.split(END, 1)
+    return head, BEGIN + body + END, tail
+
+
+def read_variants(path):
+    try:
+        with open(path) as f:
+            return [l.split()[0] for l in f if l.strip()]
+    except OSError as e:
+        fail("cannot read --variants %s: %s" % (path, e))
+
+
+def main(argv):
+    check, vfile, inputs = False, None, []
+    args = list(argv[1:])
+    while args:
+        a = args.pop(0)
+        if a == "--check":
+            check = True
+        elif a == "--variants":
+            if not args:
+                fail("--variants needs a file")
+            vfile = args.pop(0)
+        elif a in ("-h", "--help"):
+            sys.stderr.write(__doc__)
+            return 2
+        elif a.startswith("-"):
+            fail("unknown option '%s'" % a)
+        else:
+            inputs.append(a)
+    if check and inputs:
+        fail("--check takes no SYNTH_JSON (it writes nothing)")
+
+    published = load(PUBLISHED) if os.path.exists(PUBLISHED) else []
+    by_name = {r["variant"]: r for r in published}
+    for path in inputs:
+        for r in load(path):
+            if "harness" not in r:
+                fail("%s: %s is a --generic-only result (no iCE40 figures); run synth.sh "
+                     "without --generic-only" % (path, r.get("variant")))
+            by_name[r["variant"]] = r
+    order = read_variants(vfile) if vfile else sorted(by_name)
+    results = [by_name[v] for v in order if v in by_name]
+    results += [r for v, r in sorted(by_name.items()) if v not in order]
+
+    problems = []
+    if vfile:
+        problems += ["%s: not published (run scripts/synth.sh --variant %s, then publish.py "
+                     "its synth.json)" % (v, v) for v in order if v not in by_name]
+        problems += ["%s: published but not a variant of cmake/cores.cmake" % v
+                     for v in by_name if v not in order]
+    for r in results:
+        now = rtl_digest(r["core"])
+        if r.get("rtl_sha256") != now:
+            problems.append("%s: measured on other RTL than rtl/%s.f lists today (rtl_sha256 %s, "
+                            "now %s): synthesize it again" % (r["variant"], r["core"],
+                                                              (r.get("rtl_sha256") or "none")[:12],
+                                                              now[:12]))
+    head, section, tail = readme_parts()
+    table = render(results) if results else BEGIN + "\n" + END
+    if check:
+        if section != table:
+            problems.append("README.md's synthesis table is not what docs/synth.json renders: "
+                            "run scripts/synth/publish.py")
+        for p in problems:
+            sys.stderr.write("publish: %s\n" % p)
+        return 1 if problems else 0
+    if inputs:
+        with open(PUBLISHED, "w") as f:
+            json.dump({"variants": results}, f, indent=2)
+            f.write("\n")
+    with open(README, "w") as f:
+        f.write(head + table + tail)
+    for p in problems:
+        sys.stderr.write("publish: warning: %s\n" % p)
+    sys.stdout.write("publish: %d variants in docs/synth.json, README table written\n" % len(results))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))
