@@ -49,6 +49,13 @@
 //   F = |p|^2 - |s|^2         FW = COORD_W + 2 (-2|s| + 1 <= F < 2|s| + 1)
 //   closing line |e - p|      MW = COORD_W + 1
 //
+// Timing: the compares an operation needs on the picked axis (a == -1: a
+// quadrant entry; g <= 0: the switch; g == 1, g == 0: landing on e) are
+// registers per axis, decided a clock ahead by compares of the registers
+// themselves (a + 1 == -1 iff a == -2, -g == 1 iff g == -1, ...), never of the
+// next values: choosing the axis (F's sign) selects flags, not COORD_W-bit
+// words. Each flag equals its compare at every clock.
+//
 // Every output is a function of the registers and run_i (none of advance_i).
 // hls/ppc_arc_engine.h is the same engine in C++.
 module ppc_arc_engine #(
@@ -140,35 +147,47 @@ module ppc_arc_engine #(
   logic [1:0]    mneg_q, mneg_d;  // motion signs in the arc (1: negative)
   logic [1:0]    lneg_q, lneg_d;  // directions of the closing line
   logic [2:0]    laps_q, laps_d;  // quadrant entries before the final pass
+  // Per axis (x bit 0, y bit 1): a == -1, g <= 0, g == 0, g == 1.
+  logic [1:0]    am1_q, am1_d, gle0_q, gle0_d, gz_q, gz_d, gone_q, gone_d;
 
   logic          arc;  // the arc phase runs
   logic          line_run;  // the closing line runs
   logic          pick_x;  // the arc steps x (else y)
   logic [PW-1:0] a_c;  // a of the picked axis
-  logic [GW-1:0] g_c, g_o;  // g of the picked and the other axis
   logic          final_pass, arc_switch, entry, land, arc_last;
   logic          line_load;  // load the closing line with |g| this clock
   logic [MW-1:0] mag_x, mag_y;  // |g|
   logic          l_x_left, l_y_left, l_step_x, l_step_y, l_last;
   logic [1:0]    l_dir;  // direction of e - p: the sign of g, turned by the motion sign
   logic [1:0]    flip;  // a quadrant entry flips the other axis's motion sign
+  // Compares of the registers for the flags' next values, per axis.
+  logic [1:0]    am2, ap1, gtwo, gm1, gneg;  // a == -2, a == 1, g == 2, g == -1, g < 0
+  logic [1:0]    ld_am1, ld_gle0, ld_gz, ld_gone;  // the flags of the loaded state
 
   assign arc        = run_i && !sw_q && !line_q;
   assign line_run   = run_i && line_q;
   // F >= 0 picks the inward axis (a < 0), F < 0 the outward one.
   assign pick_x     = f_q[FW-1] ^ ax_q[PW-1];
   assign a_c        = pick_x ? ax_q : ay_q;
-  assign g_c        = pick_x ? gx_q : gy_q;
-  assign g_o        = pick_x ? gy_q : gx_q;
   assign final_pass = laps_q == 3'd0;
-  assign arc_switch = final_pass && (g_c[GW-1] || g_c == '0);
-  assign entry      = a_c == PMinus1;
-  assign land       = g_c == GW'(1) && g_o == '0;
+  assign arc_switch = final_pass && (pick_x ? gle0_q[0] : gle0_q[1]);
+  assign entry      = pick_x ? am1_q[0] : am1_q[1];
+  assign land       = pick_x ? gone_q[0] && gz_q[1] : gone_q[1] && gz_q[0];
   assign arc_last   = !arc_switch && (final_pass || (laps_q == 3'd1 && entry)) && land;
   assign mag_x      = MW'(gx_q[GW-1] ? -gx_q : gx_q);
   assign mag_y      = MW'(gy_q[GW-1] ? -gy_q : gy_q);
   assign l_dir      = {gy_q[GW-1] ^ mneg_q[1], gx_q[GW-1] ^ mneg_q[0]};
   assign flip       = pick_x ? 2'b10 : 2'b01;
+
+  assign am2  = {ay_q == PW'(-2), ax_q == PW'(-2)};
+  assign ap1  = {ay_q == PW'(1), ax_q == PW'(1)};
+  assign gtwo = {gy_q == GW'(2), gx_q == GW'(2)};
+  assign gm1  = {gy_q == {GW{1'b1}}, gx_q == {GW{1'b1}}};
+  assign gneg = {gy_q[GW-1], gx_q[GW-1]};
+  assign ld_am1  = {ld_ay == PMinus1, ld_ax == PMinus1};
+  assign ld_gz   = {ld_gy == '0, ld_gx == '0};
+  assign ld_gle0 = {ld_gy[GW-1], ld_gx[GW-1]} | ld_gz;
+  assign ld_gone = {ld_gy == GW'(1), ld_gx == GW'(1)};
 
   assign step_x_o     = arc ? !arc_switch && pick_x : line_run && l_step_x;
   assign step_y_o     = arc ? !arc_switch && !pick_x : line_run && l_step_y;
@@ -204,12 +223,30 @@ module ppc_arc_engine #(
     mneg_d = mneg_q;
     lneg_d = lneg_q;
     laps_d = laps_q;
+    am1_d  = am1_q;
+    gle0_d = gle0_q;
+    gz_d   = gz_q;
+    gone_d = gone_q;
     if (line_load) begin
       sw_d   = 1'b0;
       line_d = 1'b1;
       lneg_d = l_dir;
     end else if (advance_i && arc) begin
       f_d = f_q + {a_c, 1'b1};  // F += 2 p_a m_a + 1
+      // The flags of the stepped axis (a + 1, g - 1) and, on an entry, of the
+      // other one (-a, -g), from compares of today's registers.
+      for (int i = 0; i < 2; i++) begin
+        if (pick_x == (i == 0)) begin
+          am1_d[i]  = am2[i];
+          gle0_d[i] = gle0_q[i] || gone_q[i];
+          gz_d[i]   = gone_q[i];
+          gone_d[i] = gtwo[i];
+        end else if (entry) begin
+          am1_d[i]  = ap1[i];
+          gle0_d[i] = !gneg[i];
+          gone_d[i] = gm1[i];
+        end
+      end
       if (pick_x) begin
         ax_d = ax_q + PW'(1);
         gx_d = gx_q - GW'(1);
@@ -240,6 +277,10 @@ module ppc_arc_engine #(
       f_d    = '0;
       mneg_d = {ld_mneg_y, ld_mneg_x};
       laps_d = ld_laps;
+      am1_d  = ld_am1;
+      gle0_d = ld_gle0;
+      gz_d   = ld_gz;
+      gone_d = ld_gone;
     end
   end
 
@@ -255,6 +296,10 @@ module ppc_arc_engine #(
       mneg_q <= '0;
       lneg_q <= '0;
       laps_q <= '0;
+      am1_q  <= '0;
+      gle0_q <= '1;
+      gz_q   <= '1;
+      gone_q <= '0;
     end else begin
       sw_q   <= sw_d;
       line_q <= line_d;
@@ -266,6 +311,10 @@ module ppc_arc_engine #(
       mneg_q <= mneg_d;
       lneg_q <= lneg_d;
       laps_q <= laps_d;
+      am1_q  <= am1_d;
+      gle0_q <= gle0_d;
+      gz_q   <= gz_d;
+      gone_q <= gone_d;
     end
   end
 endmodule
