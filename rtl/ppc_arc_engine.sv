@@ -204,6 +204,8 @@ module ppc_arc_engine #(
     .load_i   (line_load),
     .load_ax_i(mag_x),
     .load_ay_i(mag_y),
+    .load_nz_i (~gz_q),
+    .load_le1_i(gz_q | gone_q | gm1),  // |g| <= 1
     .advance_i(advance_i && line_q),
     .x_left_o (l_x_left),
     .y_left_o (l_y_left),

@@ -113,6 +113,8 @@ module ppc_line #(
     .load_i   (buf_take),
     .load_ax_i(buf_ax_q),
     .load_ay_i(buf_ay_q),
+    .load_nz_i ({|buf_ay_q, |buf_ax_q}),
+    .load_le1_i({buf_ay_q[ACC_W-1:1] == '0, buf_ax_q[ACC_W-1:1] == '0}),
     .advance_i(advance),
     .x_left_o (x_left),
     .y_left_o (y_left),

@@ -25,6 +25,11 @@ module ppc_line_step #(
   input  logic             load_i,     // start a line: |dx| = load_ax_i, |dy| = load_ay_i, F = 0
   input  logic [MAG_W-1:0] load_ax_i,  // |dx|
   input  logic [MAG_W-1:0] load_ay_i,  // |dy|
+  // The load's flags, from the caller's registers (equal to the reductions of
+  // load_a*_i whenever load_i is high): the flags' load then waits on no
+  // MAG_W-bit reduction of what may be the caller's late arithmetic.
+  input  logic [1:0]       load_nz_i,  // |dx| != 0 (bit 0), |dy| != 0 (bit 1)
+  input  logic [1:0]       load_le1_i, // |dx| <= 1 (bit 0), |dy| <= 1 (bit 1)
   input  logic             advance_i,  // do this clock's operation (load_i wins over it)
   output logic             x_left_o,   // x still has steps to take
   output logic             y_left_o,   // y still has steps to take
@@ -54,8 +59,7 @@ module ppc_line_step #(
 
   // The flags a clock ahead. After one step the total left is at most one
   // exactly when it is at most two now: xl + yl <= 2.
-  assign ld_last = !(|load_ax_i && |load_ay_i) && (load_ax_i[MAG_W-1:1] == '0) &&
-                   (load_ay_i[MAG_W-1:1] == '0);
+  assign ld_last = !(&load_nz_i) && (&load_le1_i);
   assign xl_le2  = (xl_q[MAG_W-1:2] == '0) && !(xl_q[1] && xl_q[0]);
   assign yl_le2  = (yl_q[MAG_W-1:2] == '0) && !(yl_q[1] && yl_q[0]);
   assign last_d  = xl_le2 && yl_le2 && !(xl_q[1] && y_left_q) && !(yl_q[1] && x_left_q);
@@ -76,8 +80,8 @@ module ppc_line_step #(
       xl_q     <= load_ax_i;
       yl_q     <= load_ay_i;
       f_q      <= '0;
-      x_left_q <= |load_ax_i;
-      y_left_q <= |load_ay_i;
+      x_left_q <= load_nz_i[0];
+      y_left_q <= load_nz_i[1];
       last_q   <= ld_last;
     end else if (advance_i && (step_x_o || step_y_o)) begin
       f_q    <= f_d;
