@@ -184,10 +184,15 @@ module ppc_arc_engine #(
   assign gtwo = {gy_q == GW'(2), gx_q == GW'(2)};
   assign gm1  = {gy_q == {GW{1'b1}}, gx_q == {GW{1'b1}}};
   assign gneg = {gy_q[GW-1], gx_q[GW-1]};
-  assign ld_am1  = {ld_ay == PMinus1, ld_ax == PMinus1};
-  assign ld_gz   = {ld_gy == '0, ld_gx == '0};
-  assign ld_gle0 = {ld_gy[GW-1], ld_gx[GW-1]} | ld_gz;
-  assign ld_gone = {ld_gy == GW'(1), ld_gx == GW'(1)};
+  // The loaded flags from s and E before the motion sign turns them (no
+  // negation on the way): a = s m == -1 iff s == -m; g = E m <= 0 iff E m <= 0.
+  assign ld_am1  = {ld_mneg_y ? ld_sy == PW'(1) : ld_sy == PMinus1,
+                    ld_mneg_x ? ld_sx == PW'(1) : ld_sx == PMinus1};
+  assign ld_gz   = {ld_dy == '0, ld_dx == '0};
+  assign ld_gle0 = {ld_mneg_y ? !ld_dy[COORD_W-1] : ld_dy[COORD_W-1],
+                    ld_mneg_x ? !ld_dx[COORD_W-1] : ld_dx[COORD_W-1]} | ld_gz;
+  assign ld_gone = {ld_mneg_y ? ld_dy == '1 : ld_dy == COORD_W'(1),
+                    ld_mneg_x ? ld_dx == '1 : ld_dx == COORD_W'(1)};
 
   assign step_x_o     = arc ? !arc_switch && pick_x : line_run && l_step_x;
   assign step_y_o     = arc ? !arc_switch && !pick_x : line_run && l_step_y;
