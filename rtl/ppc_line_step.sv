@@ -16,7 +16,8 @@
 // (each is the reduction of the counters it stands for, kept equal to it at
 // every clock), so every output is one LUT of registers (a flag, F's sign):
 // the caller's stall/advance logic never waits on a MAG_W-bit reduction. An
-// operation is one MAG_W+1-bit add with carry-in and two decrements.
+// operation is two MAG_W+1-bit adds (F after an x step, after a y step; the
+// rule picks one) and a decrement.
 module ppc_line_step #(
   parameter int MAG_W = 32  // width of the magnitudes |dx|, |dy| (unsigned), >= 3
 ) (
@@ -39,7 +40,7 @@ module ppc_line_step #(
 );
   logic [MAG_W-1:0] ax_q, ay_q;  // |dx|, |dy| of the running line
   logic [MAG_W-1:0] xl_q, yl_q;  // steps left per axis
-  logic [MAG_W:0]   f_q, f_d;  // F, two's complement
+  logic [MAG_W:0]   f_q, f_d, f_x, f_y;  // F, two's complement; F after an x or a y step
   logic             x_left_q, y_left_q;  // |xl_q, |yl_q
   logic             last_q, last_d;  // xl_q + yl_q <= 1
   logic             pick_x;  // the rule chooses x (it steps only if x has steps left)
@@ -54,8 +55,12 @@ module ppc_line_step #(
   // At most one step left in total (none: a zero-length line).
   assign last_o   = last_q;
 
-  // x step: F - |dy| = F + ~|dy| + 1; y step: F + |dx|. One adder.
-  assign f_d = f_q + (pick_x ? ~{1'b0, ay_q} : {1'b0, ax_q}) + {{MAG_W{1'b0}}, pick_x};
+  // x step: F - |dy|; y step: F + |dx|. Both sums from registers, the rule's
+  // choice after them: pick_x selects a result instead of waiting at the
+  // start of a MAG_W+1-bit carry chain (the price: one more adder).
+  assign f_x = f_q - {1'b0, ay_q};
+  assign f_y = f_q + {1'b0, ax_q};
+  assign f_d = pick_x ? f_x : f_y;
 
   // The flags a clock ahead. After one step the total left is at most one
   // exactly when it is at most two now: xl + yl <= 2.
