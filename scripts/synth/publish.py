@@ -99,7 +99,7 @@ def render(results):
     seeds = sorted({p["seed"] for r in results for p in r["harness"]["hx8k"]})
     out = [BEGIN, "",
            "| variant | iCE40 core LUT4 / CARRY / FF / BRAM | HX8K Fmax, seeds %s (MHz) | target |"
-           " critical path, first seed: from -> to | UP5K (sg48), seed %d | measured |" % (
+           " critical path, first seed: from -> to | UP5K (sg48), seed %d | measured on, RTL |" % (
                "/".join(str(s) for s in seeds), results[0]["up5k"]["seed"]),
            "|---|---|---|---|---|---|---|"]
     missed = []
@@ -116,10 +116,10 @@ def render(results):
                                                    u.get("fmax_mhz", 0))
         else:
             up = "does not fit (%s LUT4 with the harness)" % u.get("lut4", "?")
-        out.append("| `%s` | %d / %d / %d / %d | %s | %d MHz: %s | %s | %s | %s, %s |" % (
+        out.append("| `%s` | %d / %d / %d / %d | %s | %d MHz: %s | %s | %s | %s, `%s` |" % (
             r["variant"], c["lut4"], c["carry"], c["ff"], c.get("bram", 0), fm, t,
             "met" if ok else "missed", path_text(h["hx8k"][0].get("critical_path")), up,
-            r.get("date", "?"), r.get("git", "?")))
+            r.get("date", "?"), (r.get("rtl_sha256") or "?")[:8]))
     axis = per_axis_rows(results)
     if axis:
         out += ["", "Per axis (two variants of a core that differ only in `AXES`):", "",
