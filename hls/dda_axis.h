@@ -24,10 +24,20 @@ class DdaAxis {
              const word_t& hm) {
     if (en) {
       const word_t low = s_q_.range(W - 1, 0);
-      const word_t x = pre ? a0 : (MODULUS_2N ? word_t(low | hm) : low);
-      // dc has W + 1 bits (rtl/dda_axis.sv): 2^W when the axis steps every iteration.
-      const sum_t y = pre ? sum_t(b_mag) : (!MODULUS_2N && s_q_[W] ? dc_q_ : sum_t(mag_q_));
-      s_q_ = sum_t(x) + y;
+      if (MODULUS_2N) {
+        // s_q_ holds the mask itself; a load's sum has no carry but at bit n-1.
+        if (pre) {
+          s_q_ = (sum_t((a0 & b_mag) != 0) << W) | sum_t(a0 ^ b_mag);
+        } else {
+          const sum_t s = sum_t(low) + sum_t(mag_q_);
+          s_q_ = s | sum_t(hm);
+        }
+      } else {
+        const word_t x = pre ? a0 : low;
+        // dc has W + 1 bits (rtl/dda_axis.sv): 2^W when the axis steps every iteration.
+        const sum_t y = pre ? sum_t(b_mag) : (s_q_[W] ? dc_q_ : sum_t(mag_q_));
+        s_q_ = sum_t(x) + y;
+      }
     }
     if (ld) {
       mag_q_ = b_mag;
@@ -39,6 +49,7 @@ class DdaAxis {
   word_t mag_q_ = 0;
   sum_t dc_q_ = 0;
   sum_t s_q_ = 0;  // accumulator + increment, one iteration ahead; bit W is the carry
+                   // (MODULUS_2N: with the high mask ORed in)
 };
 
 }  // namespace hwinterp::hls

@@ -6,17 +6,24 @@
 // The accumulator is W bits wide with an offset that puts the modulus at
 // 2^W: its carry out is always the adder's top bit.
 //   MODULUS_2N = 1 (dda_line): modulus 2^n; the bits n and up are held at
-//     one (hm_i, the command's high mask): an iteration adds (s | hm) + mag.
+//     one (hm_i, the command's high mask). s_q keeps them at one itself (the
+//     mask is ORed in after each add), so an iteration adds s_q + mag.
+//     A load's add is a0_i + b_mag_i with a0 = hm, plus 2^(n-1) with the half
+//     preload, and b_mag_i < 2^n: no bit of the two is set in both but, with
+//     the half preload, bit n-1, so the sum's low bits (mask held) are
+//     a0 ^ b_mag and its carry is |(a0 & b_mag). No adder on the load.
 //   MODULUS_2N = 0 (general modulus N, e.g. a helical axis slaved to an arc's
 //     N operations): the offset is 2^W - N; an iteration adds s + mag, or
 //     s + dc after a carry, with dc = mag + 2^W - N given with the command
 //     (for modulus 2^n, dc = mag | hm). dc has W + 1 bits: mag <= N, and an
-//     axis that steps on every iteration (mag = N) has dc = 2^W.
-// A load's add is the first value plus the magnitude: a0_i + b_mag_i.
+//     axis that steps on every iteration (mag = N) has dc = 2^W. A load's add
+//     is the first value plus the magnitude: a0_i + b_mag_i.
 //
-// Timing: the adder's operands select on pre_i (a register: the next add is
-// a load's) and the running registers; the clock's late signals (ld_i, en_i)
-// only enable registers.
+// Timing: MODULUS_2N = 1: the adder's operands are registers (s_q, mag_q);
+// the load's choice (pre_i, a register) and the mask come after it, in the
+// LUTs that end the carry chain. MODULUS_2N = 0: the operands select on pre_i
+// and the running registers. The clock's late signals (ld_i, en_i) only
+// enable registers.
 module dda_axis #(
   parameter int W          = 32,  // magnitude and accumulator width
   parameter bit MODULUS_2N = 1    // 1: modulus 2^n with the high mask; 0: general modulus
@@ -32,22 +39,25 @@ module dda_axis #(
   input  logic [W-1:0] hm_i,     // the running command's high mask (MODULUS_2N = 1)
   output logic         carry_o   // this iteration steps the axis
 );
-  logic [W-1:0] mag_q, x;
-  logic [W:0]   y;
-  logic [W:0]   s_q;
+  logic [W-1:0] mag_q;
+  logic [W:0]   s_q, s_d;
 
-  assign x       = pre_i ? a0_i : (MODULUS_2N ? (s_q[W-1:0] | hm_i) : s_q[W-1:0]);
   assign carry_o = s_q[W];
 
   if (MODULUS_2N) begin : g_2n
-    logic unused_dc;  // no dc in this mode
+    logic       unused_dc;  // no dc in this mode
+    logic [W:0] sum;
     assign unused_dc = ^b_dc_i;
-    assign y = {1'b0, pre_i ? b_mag_i : mag_q};
+    assign sum       = {1'b0, s_q[W-1:0]} + {1'b0, mag_q};
+    assign s_d       = pre_i ? {|(a0_i & b_mag_i), a0_i ^ b_mag_i} : {sum[W], sum[W-1:0] | hm_i};
   end else begin : g_n
-    logic unused_hm;  // no high mask in this mode
-    logic [W:0] dc_q;
+    logic       unused_hm;  // no high mask in this mode
+    logic [W-1:0] x;
+    logic [W:0] y, dc_q;
     assign unused_hm = ^hm_i;
-    assign y = pre_i ? {1'b0, b_mag_i} : (s_q[W] ? dc_q : {1'b0, mag_q});
+    assign x         = pre_i ? a0_i : s_q[W-1:0];
+    assign y         = pre_i ? {1'b0, b_mag_i} : (s_q[W] ? dc_q : {1'b0, mag_q});
+    assign s_d       = {1'b0, x} + y;
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) dc_q <= '0;
       else if (ld_i) dc_q <= b_dc_i;
@@ -60,7 +70,7 @@ module dda_axis #(
       s_q   <= '0;
     end else begin
       if (ld_i) mag_q <= b_mag_i;
-      if (en_i) s_q <= {1'b0, x} + y;
+      if (en_i) s_q <= s_d;
     end
   end
 endmodule

@@ -20,8 +20,8 @@
 // one (hm, the command's high mask), so the carry out of bit n-1 runs through
 // them to the adder's carry out: no shifter, and the carry is always the top
 // bit. Each axis keeps s_q = accumulator + |delta_i| one iteration ahead, so
-// this iteration's carry is a register; an iteration adds (s_q | hm) +
-// |delta_i|. Taking a command registers the magnitudes and their OR (buffer
+// this iteration's carry is a register; s_q holds the mask itself (ORed in
+// after each add), so an iteration adds s_q + |delta_i| (rtl/dda_axis.sv). Taking a command registers the magnitudes and their OR (buffer
 // A); the next clock derives from the OR the command's masks and the first
 // accumulator value (buffer B: 2^n - 1, hm, hm + 2^(n-1) with half preload);
 // the engine loads buffer B, its first add being that first value plus the
