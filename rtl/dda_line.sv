@@ -106,6 +106,7 @@ module dda_line #(
   // accumulator value (hm, plus 2^(n-1) with half preload).
   logic                  b_valid_q, b_valid_d;
   logic [ACC_W-1:0]      b_low_q, b_hm_q, b_a0_q;
+  logic                  b_low_zero_q, b_low_one_q;  // b_low_q == 0, b_low_q == 1
   logic                  load;  // the engine loads buffer B this clock
   logic                  pre_load_q, pre_load_d;  // ...if it advances (or is idle): a register
   logic [ACC_W-1:0]      a_low, a_hm, a_top;
@@ -124,6 +125,7 @@ module dda_line #(
   logic                  act_q, act_d;  // a command is running
   logic [ACC_W-1:0]      left_q, left_d;  // iterations still to do after this one
   logic                  left_zero_q, left_zero_d;  // left_q == 0: this iteration is the last
+  logic                  left_one_q, left_one_d;  // left_q == 1
   logic [ACC_W-1:0]      hm_q;
   logic                  done_q;
   logic [AXES-1:0]       carry;  // this iteration steps the axis
@@ -136,6 +138,10 @@ module dda_line #(
   // below is a choice by advance between two values computed from registers:
   // the clock's late signal enters each register at its last gate.
   // pre_load_q == b_valid_q && (!act_q || left_zero_q), kept as a register.
+  // The counts' compares are registers too (left_one_q, b_low_zero_q,
+  // b_low_one_q), so these next states are small cones of registers: a
+  // compare inside one would let the mapper (ABC) put the late advance
+  // under more LUT levels.
   // Buffer A moves on only into an empty buffer B, so neither depends on the
   // clock's advance; a command still reaches B a clock before the engine can
   // load it again (2^n >= 1 iterations, and cmd_ready_o lets in one command
@@ -166,13 +172,15 @@ module dda_line #(
   assign idle_load = pre_load_q && !act_q && !abort_i;
   assign act_adv   = pre_load_q || !left_zero_q;
   assign act_idle  = (act_q && !abort_i) || idle_load;
-  assign lz_adv    = pre_load_q ? (b_low_q == '0) : (left_q == ACC_W'(1));
-  assign lz_idle   = idle_load ? (b_low_q == '0) : left_zero_q;
+  assign lz_adv    = pre_load_q ? b_low_zero_q : left_one_q;
+  assign lz_idle   = idle_load ? b_low_zero_q : left_zero_q;
   assign bv_adv    = a_to_b || (b_valid_q && !pre_load_q);
   assign bv_idle   = !abort_i && (a_to_b || (b_valid_q && !idle_load));
 
   assign act_d       = advance ? act_adv : act_idle;
   assign left_zero_d = advance ? lz_adv : lz_idle;
+  assign left_one_d  = advance ? (pre_load_q ? b_low_one_q : (left_q == ACC_W'(2))) :
+                                 (idle_load ? b_low_one_q : left_one_q);
   assign left_d      = advance ? (pre_load_q ? b_low_q : left_q - ACC_W'(1)) :
                                  (idle_load ? b_low_q : left_q);
   assign b_valid_d   = advance ? bv_adv : bv_idle;
@@ -181,19 +189,22 @@ module dda_line #(
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      a_valid_q   <= 1'b0;
-      a_any_q     <= '0;
-      a_half_q    <= 1'b0;
-      b_valid_q   <= 1'b0;
-      pre_load_q  <= 1'b0;
-      b_low_q     <= '0;
-      b_hm_q      <= '0;
-      b_a0_q      <= '0;
-      act_q       <= 1'b0;
-      left_q      <= '0;
-      left_zero_q <= 1'b0;
-      hm_q        <= '0;
-      done_q      <= 1'b0;
+      a_valid_q    <= 1'b0;
+      a_any_q      <= '0;
+      a_half_q     <= 1'b0;
+      b_valid_q    <= 1'b0;
+      pre_load_q   <= 1'b0;
+      b_low_q      <= '0;
+      b_hm_q       <= '0;
+      b_a0_q       <= '0;
+      b_low_zero_q <= 1'b0;
+      b_low_one_q  <= 1'b0;
+      act_q        <= 1'b0;
+      left_q       <= '0;
+      left_zero_q  <= 1'b0;
+      left_one_q   <= 1'b0;
+      hm_q         <= '0;
+      done_q       <= 1'b0;
     end else begin
       a_valid_q <= a_valid_d;
       if (cmd_take) begin
@@ -206,10 +217,14 @@ module dda_line #(
         b_low_q <= a_low;
         b_hm_q  <= a_hm;
         b_a0_q  <= a_hm | (a_half_q ? a_top : '0);
+        // low = 2^n - 1 is 0 (1) just when the magnitudes' OR is 0 (1).
+        b_low_zero_q <= (a_any_q == '0);
+        b_low_one_q  <= (a_any_q == ACC_W'(1));
       end
       act_q       <= act_d;
       left_q      <= left_d;
       left_zero_q <= left_zero_d;
+      left_one_q  <= left_one_d;
       if (load) hm_q <= b_hm_q;
       done_q <= last;
     end
