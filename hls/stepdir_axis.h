@@ -24,8 +24,9 @@ class StepdirAxis {
     tim_one_q_ = hold_ok_q_ = setup_ok_q_ = ok_pos_q_ = ok_neg_q_ = false;
   }
 
-  // A pulse in direction want_dir may start on the next clock (combinational,
-  // like ready_o; want_valid is the engine's business).
+  // A pulse in direction want_dir may start on the next clock (ready_o with
+  // READY_Q = 0; with READY_Q = 1 the RTL registers the same value a clock
+  // ahead from the engine's next want_dir; want_valid is the engine's business).
   bool ready(bool want_dir) const { return want_dir ? ok_neg_q_ : ok_pos_q_; }
 
   // One rising clock edge.

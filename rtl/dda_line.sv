@@ -131,6 +131,7 @@ module dda_line #(
   logic [AXES-1:0]       carry;  // this iteration steps the axis
   logic [AXES-1:0]       moves;  // the running command moves the axis at all
   logic [AXES-1:0]       neg;  // ...in the negative direction
+  logic [AXES-1:0]       neg_next;  // neg on the next clock (the stage decides ready a clock ahead)
   logic [AXES-1:0]       ready;  // the axis may start a pulse on the next clock
   logic                  tick, stall, advance, last;
 
@@ -273,6 +274,7 @@ module dda_line #(
                                 (idle_load ? b_moves_q : moves_q && !abort_i);
     assign moves[i] = moves_q;
     assign neg[i]   = neg_q;
+    assign neg_next[i] = load ? b_neg_q : neg_q;
 
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
@@ -304,9 +306,10 @@ module dda_line #(
   // ---------------------------------------------------------------------------
   // Output stage: step/dir timing and position counters.
   step_stage #(
-    .AXES (AXES),
-    .POS_W(POS_W),
-    .TIM_W(TIM_W)
+    .AXES   (AXES),
+    .POS_W  (POS_W),
+    .TIM_W  (TIM_W),
+    .READY_Q(1'b1)
   ) u_out (
     .clk_i,
     .rst_ni,
@@ -316,6 +319,7 @@ module dda_line #(
     .dir_hold_i,
     .want_valid_i(moves),
     .want_dir_i  (neg),
+    .want_dir_next_i(neg_next),
     .fire_i      ({AXES{advance}} & carry),
     .ready_o     (ready),
     .step_o,

@@ -185,6 +185,7 @@ module fixed_ratio #(
   logic [AXES-1:0] must;  // it steps on this tick
   logic [AXES-1:0] fin;  // it has no pulse left after this tick
   logic [AXES-1:0] neg;  // direction of the running command (1: negative)
+  logic [AXES-1:0] neg_next;  // neg on the next clock (the stage decides ready a clock ahead)
   logic [AXES-1:0] ready;  // the axis may start a pulse on the next clock
   logic            tick, stall, advance, last;
 
@@ -283,6 +284,7 @@ module fixed_ratio #(
     assign left[i]  = cnt_q != '0;
     assign fin[i]   = !left[i] || (cnt_q == ACC_W'(1) && carry[i]);
     assign neg[i]   = neg_q;
+    assign neg_next[i] = buf_take ? buf_neg_q : neg_q;
     assign sum_next = {1'b0, sum_q[FRAC_W-1:0]} + rate_q + {{FRAC_W{1'b0}}, rnd_q};
     assign sum_load = Half + quot_q + {{FRAC_W{1'b0}}, rnd};
     assign sum_d    = buf_take ? sum_load : advance ? sum_next : sum_q;
@@ -320,9 +322,10 @@ module fixed_ratio #(
   // ---------------------------------------------------------------------------
   // Output stage: step/dir timing and position counters.
   step_stage #(
-    .AXES (AXES),
-    .POS_W(POS_W),
-    .TIM_W(TIM_W)
+    .AXES   (AXES),
+    .POS_W  (POS_W),
+    .TIM_W  (TIM_W),
+    .READY_Q(1'b1)
   ) u_out (
     .clk_i,
     .rst_ni,
@@ -332,6 +335,7 @@ module fixed_ratio #(
     .dir_hold_i,
     .want_valid_i({AXES{act_q}} & left),
     .want_dir_i  (neg),
+    .want_dir_next_i(neg_next),
     .fire_i      ({AXES{advance}} & must),
     .ready_o     (ready),
     .step_o,

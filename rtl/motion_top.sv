@@ -382,6 +382,7 @@ module motion_top #(
     .dir_hold_i,
     .want_valid_i(want_valid),
     .want_dir_i  (want_dir),
+    .want_dir_next_i(want_dir),  // unused: READY_Q = 0
     .fire_i      ({AXES{advance}} & carry),
     .ready_o     (ready),
     .step_o,

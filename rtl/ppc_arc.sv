@@ -164,6 +164,7 @@ module ppc_arc #(
     .dir_hold_i,
     .want_valid_i(want_valid),
     .want_dir_i  (want_dir),
+    .want_dir_next_i(want_dir),  // unused: READY_Q = 0
     .fire_i      ({AXES{advance}} & carry),
     .ready_o     (ready),
     .step_o,

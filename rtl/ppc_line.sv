@@ -157,9 +157,10 @@ module ppc_line #(
   // ---------------------------------------------------------------------------
   // Output stage: step/dir timing and position counters.
   step_stage #(
-    .AXES (AXES),
-    .POS_W(POS_W),
-    .TIM_W(TIM_W)
+    .AXES   (AXES),
+    .POS_W  (POS_W),
+    .TIM_W  (TIM_W),
+    .READY_Q(1'b1)
   ) u_out (
     .clk_i,
     .rst_ni,
@@ -169,6 +170,7 @@ module ppc_line #(
     .dir_hold_i,
     .want_valid_i({act_q && y_left, act_q && x_left}),
     .want_dir_i  (neg_q),
+    .want_dir_next_i(buf_take ? buf_neg_q : neg_q),  // neg_q on the next clock
     .fire_i      ({AXES{advance}} & carry),
     .ready_o     (ready),
     .step_o,

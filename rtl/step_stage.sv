@@ -15,9 +15,10 @@
 // multi-dimensional packed arrays; Icarus 11 cannot index them with a loop
 // variable).
 module step_stage #(
-  parameter int AXES  = 2,   // axes
-  parameter int POS_W = 32,  // position counter width (wraps)
-  parameter int TIM_W = 16   // width of the timing settings and counters
+  parameter int AXES    = 2,    // axes
+  parameter int POS_W   = 32,   // position counter width (wraps)
+  parameter int TIM_W   = 16,   // width of the timing settings and counters
+  parameter bit READY_Q = 1'b0  // 1: ready_o registers, decided from want_dir_next_i (rtl/stepdir_axis.sv)
 ) (
   input  logic                  clk_i,
   input  logic                  rst_ni,
@@ -28,6 +29,7 @@ module step_stage #(
   input  logic [TIM_W-1:0]      dir_hold_i,
   input  logic [AXES-1:0]       want_valid_i,  // the running command moves the axis
   input  logic [AXES-1:0]       want_dir_i,    // ...in this direction (1: negative)
+  input  logic [AXES-1:0]       want_dir_next_i,  // want_dir_i of the next clock (READY_Q = 1)
   input  logic [AXES-1:0]       fire_i,        // start a pulse next clock (ready axes only)
   output logic [AXES-1:0]       ready_o,       // a pulse in direction want_dir_i may start next clock
   output logic [AXES-1:0]       step_o,
@@ -71,7 +73,8 @@ module step_stage #(
     assign pos_o[i*POS_W +: POS_W] = pos_q;
 
     stepdir_axis #(
-      .TIM_W(TIM_W)
+      .TIM_W  (TIM_W),
+      .READY_Q(READY_Q)
     ) u_stepdir (
       .clk_i,
       .rst_ni,
@@ -89,6 +92,7 @@ module step_stage #(
       .fresh_i     (fresh),
       .want_valid_i(want_valid_i[i]),
       .want_dir_i  (want_dir_i[i]),
+      .want_dir_next_i(want_dir_next_i[i]),
       .fire_i      (fire_i[i]),
       .ready_o     (ready_o[i]),
       .step_o      (step_o[i]),

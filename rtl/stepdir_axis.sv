@@ -28,14 +28,19 @@
 // ready_o answers for a pulse in the direction want_dir_i, whether or not
 // want_valid_i asks for one (the engine fires only axes its command moves).
 //
-// Timing: ready_o is a register selected by want_dir_i; every compare a
-// clock needs is decided a clock ahead into a flag register (tim_one_q,
-// hold_ok_q, setup_ok_q, ok_pos_q/ok_neg_q), and the counters count down to
-// 1 (no compare against a setting). fire_i, the engine's late signal, enters
-// the next state only at its last gate. The settings arrive prepared once for
+// Timing: every compare a clock needs is decided a clock ahead into a flag
+// register (tim_one_q, hold_ok_q, setup_ok_q), and the counters count down
+// to 1 (no compare against a setting). ready_o is decided a clock ahead too:
+// READY_Q = 0, for either direction (ok_pos_q, ok_neg_q), selected by
+// want_dir_i; READY_Q = 1, as one register for the direction the engine
+// says on want_dir_next_i it will want on the next clock (the same values;
+// the engine's stall then reads registers only). fire_i, the engine's late
+// signal, enters the next state only at its last gate. The settings arrive
+// prepared once for
 // all axes by rtl/stepdir_timing.sv.
 module stepdir_axis #(
-  parameter int TIM_W = 16  // width of the settings and counters (>= 2)
+  parameter int TIM_W   = 16,   // width of the settings and counters (>= 2)
+  parameter bit READY_Q = 1'b0  // 1: ready_o a register, from want_dir_next_i
 ) (
   input  logic             clk_i,
   input  logic             rst_ni,
@@ -55,6 +60,7 @@ module stepdir_axis #(
   // The engine
   input  logic             want_valid_i,  // the active command moves this axis...
   input  logic             want_dir_i,    // ...in this direction
+  input  logic             want_dir_next_i,  // want_dir_i of the next clock (READY_Q = 1; else unused)
   input  logic             fire_i,        // start a pulse next clock (only when ready_o)
   output logic             ready_o,
   // The pins
@@ -80,8 +86,6 @@ module stepdir_axis #(
   logic             tim_one_q, tim_one_d;  // tim (without v) <= 1: last high cycle / space done
   logic             hold_ok_q, hold_ok_d;  // step_o low and the hold done: dir_o may turn
   logic             setup_ok_q, setup_ok_d;  // the setup done
-  logic             ok_pos_q, ok_pos_d;  // step_o low, space and setup done, dir_o = 0
-  logic             ok_neg_q, ok_neg_d;  // the same with dir_o = 1
 
   // c - off <= 2 for a counter c with offset off (0 or 1).
   function automatic logic le2_off(input logic [TIM_W-1:0] c, input logic off);
@@ -90,7 +94,6 @@ module stepdir_axis #(
 
   logic turn;
   assign turn    = hold_ok_q && want_valid_i && (want_dir_i != dir_q);
-  assign ready_o = want_dir_i ? ok_neg_q : ok_pos_q;
 
   // The next state in two parts: what it would be without a pulse starting
   // (the _nf values, from registers and want_* only), and fire_i, the
@@ -159,8 +162,33 @@ module stepdir_axis #(
   assign v_d       = v_nf && !fire_i;
   assign tim_one_d = fire_i ? len_one_i : tim_one_nf;
   assign hold_ok_d = hold_ok_nf && !fire_i;
-  assign ok_pos_d  = pulse_nf && !fire_i && !dir_d;
-  assign ok_neg_d  = pulse_nf && !fire_i && dir_d;
+
+  // ready_o: a pulse may start (step_o low, space and setup done) and dir_o
+  // is the direction wanted.
+  if (READY_Q) begin : g_ready_q
+    // Decided a clock ahead, for the direction wanted on the next clock.
+    logic ready_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) ready_q <= 1'b0;
+      else ready_q <= pulse_nf && !fire_i && (want_dir_next_i == dir_d);
+    end
+    assign ready_o = ready_q;
+  end else begin : g_ready_mux
+    // Decided a clock ahead for either direction, selected by want_dir_i.
+    logic unused_next;  // no prediction in this mode
+    logic ok_pos_q, ok_neg_q;  // with dir_o = 0, with dir_o = 1
+    assign unused_next = want_dir_next_i;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        ok_pos_q <= 1'b0;
+        ok_neg_q <= 1'b0;
+      end else begin
+        ok_pos_q <= pulse_nf && !fire_i && !dir_d;
+        ok_neg_q <= pulse_nf && !fire_i && dir_d;
+      end
+    end
+    assign ready_o = want_dir_i ? ok_neg_q : ok_pos_q;
+  end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -174,8 +202,6 @@ module stepdir_axis #(
       tim_one_q  <= 1'b0;
       hold_ok_q  <= 1'b0;
       setup_ok_q <= 1'b0;
-      ok_pos_q   <= 1'b0;
-      ok_neg_q   <= 1'b0;
     end else begin
       step_q     <= step_d;
       dir_q      <= dir_d;
@@ -187,8 +213,6 @@ module stepdir_axis #(
       tim_one_q  <= tim_one_d;
       hold_ok_q  <= hold_ok_d;
       setup_ok_q <= setup_ok_d;
-      ok_pos_q   <= ok_pos_d;
-      ok_neg_q   <= ok_neg_d;
     end
   end
 

@@ -13,6 +13,8 @@
 #                 counters), so the design's TIM_W=16 is not checked directly;
 #                 the stage is the same RTL for every width.
 #   --out DIR     output directory (default <build>/reports/formal)
+# stepdir_axis is checked in both ready_o modes: READY_Q=0 at every width,
+# READY_Q=1 (ready_o a register, decided from want_dir_next_i) at the first.
 # Runs BMC and induction side by side when HWINTERP_JOBS (default 2) allows.
 # Exits non-zero, naming the step and log, when a property fails or a tool
 # is missing; a failing BMC leaves a counterexample trace (.vcd) in DIR.
@@ -80,35 +82,46 @@ run() {
 
 jobs=${HWINTERP_JOBS:-2}
 status=0
+# One run per block, width and (stepdir_axis only) ready_o mode: "block w mode".
+runs=()
 for block in "${blocks[@]}"; do
+  for w in "${width_list[@]}"; do runs+=("$block $w 0"); done
+done
+runs+=("stepdir_axis ${width_list[0]} 1")
+for r in "${runs[@]}"; do
+  read -r block w rq <<<"$r"
   props=$root/rtl/formal/${block}_props.sv
-  for w in "${width_list[@]}"; do
-    smt=$out/${block}_w$w.smt2
-    # prep, then async2sync (the asynchronous reset as logic on the flip-flop
-    # outputs, which smtbmc can step) and dffunmap (plain $dff for write_smt2).
-    yosys -q -l "$out/prep_${block}_w$w.log" -p "read_verilog -sv -formal ${block_files[$block]} $props;
-      chparam -set TIM_W $w ${block}_props; prep -top ${block}_props;
-      async2sync; dffunmap; write_smt2 -wires $smt" >/dev/null 2>&1 ||
-      die "step 'yosys prep' failed for $block TIM_W=$w; see $out/prep_${block}_w$w.log"
-    # --unroll: with the default encoding, z3 4.8.12 spends ~80 s on the very
-    # first query (measured: `-t 1` alone took 81 s); unrolled, BMC to depth 30
-    # takes ~30 s and induction ~2 s, and the same mutants fail.
-    bmc=(run "$out/bmc_${block}_w${w}_d$depth.log" yosys-smtbmc -s z3 --unroll -t "$depth"
-      --dump-vcd "$out/bmc_${block}_w${w}_d$depth.vcd" "$smt")
-    ind=(run "$out/induction_${block}_w${w}_d$depth.log" yosys-smtbmc -s z3 --unroll -i -t "$depth"
-      "$smt")
-    if [ "$jobs" -ge 2 ]; then
-      "${bmc[@]}" &
-      p1=$!
-      "${ind[@]}" &
-      p2=$!
-      wait "$p1" || status=1
-      wait "$p2" || status=1
-    else
-      "${bmc[@]}" || status=1
-      "${ind[@]}" || status=1
-    fi
-  done
+  tag=${block}_w$w
+  chp="chparam -set TIM_W $w ${block}_props"
+  if [ "$rq" = 1 ]; then
+    tag=${block}_readyq_w$w
+    chp="chparam -set TIM_W $w -set READY_Q 1 ${block}_props"
+  fi
+  smt=$out/$tag.smt2
+  # prep, then async2sync (the asynchronous reset as logic on the flip-flop
+  # outputs, which smtbmc can step) and dffunmap (plain $dff for write_smt2).
+  yosys -q -l "$out/prep_$tag.log" -p "read_verilog -sv -formal ${block_files[$block]} $props;
+    $chp; prep -top ${block}_props;
+    async2sync; dffunmap; write_smt2 -wires $smt" >/dev/null 2>&1 ||
+    die "step 'yosys prep' failed for $block TIM_W=$w READY_Q=$rq; see $out/prep_$tag.log"
+  # --unroll: with the default encoding, z3 4.8.12 spends ~80 s on the very
+  # first query (measured: `-t 1` alone took 81 s); unrolled, BMC to depth 30
+  # takes ~30 s and induction ~2 s, and the same mutants fail.
+  bmc=(run "$out/bmc_${tag}_d$depth.log" yosys-smtbmc -s z3 --unroll -t "$depth"
+    --dump-vcd "$out/bmc_${tag}_d$depth.vcd" "$smt")
+  ind=(run "$out/induction_${tag}_d$depth.log" yosys-smtbmc -s z3 --unroll -i -t "$depth"
+    "$smt")
+  if [ "$jobs" -ge 2 ]; then
+    "${bmc[@]}" &
+    p1=$!
+    "${ind[@]}" &
+    p2=$!
+    wait "$p1" || status=1
+    wait "$p2" || status=1
+  else
+    "${bmc[@]}" || status=1
+    "${ind[@]}" || status=1
+  fi
 done
 [ $status -eq 0 ] || die "a property failed or a run did not finish; logs in $out"
-echo "formal: all properties of ${blocks[*]} hold (BMC depth $depth and induction, TIM_W ${width_list[*]}); logs in $out"
+echo "formal: all properties of ${blocks[*]} hold (BMC depth $depth and induction, TIM_W ${width_list[*]}; stepdir_axis with READY_Q=1 at TIM_W ${width_list[0]}); logs in $out"

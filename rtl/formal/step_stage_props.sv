@@ -42,6 +42,7 @@ module step_stage_props #(
     .dir_hold_i,
     .want_valid_i,
     .want_dir_i,
+    .want_dir_next_i(want_dir_i),  // READY_Q = 0: unused
     .fire_i,
     .ready_o(ready),
     .step_o (step),

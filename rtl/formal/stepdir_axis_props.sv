@@ -27,10 +27,14 @@
 // pulse after reset, measured from the reset; on that first clock ready_o is
 // low and dir_o does not turn (a_first).
 // Assumptions: reset in the first cycle only; the engine fires only a ready
-// axis (fire_i -> ready_o, as every core's stall logic guarantees).
+// axis (fire_i -> ready_o, as every core's stall logic guarantees); with
+// READY_Q = 1, want_dir_next_i on each clock is want_dir_i of the next (from
+// the second clock after reset on; ready_o is low on the first anyway), so
+// a_ready proves the registered ready_o exact.
 // want_valid_i, want_dir_i, fire_i and the settings are otherwise free every cycle.
 module stepdir_axis_props #(
-  parameter int TIM_W = 4
+  parameter int TIM_W   = 4,
+  parameter bit READY_Q = 1'b0  // the stage's ready_o mode (rtl/stepdir_axis.sv)
 ) (
   input logic             clk_i,
   input logic             rst_ni,
@@ -40,6 +44,7 @@ module stepdir_axis_props #(
   input logic [TIM_W-1:0] dir_hold_i,
   input logic             want_valid_i,
   input logic             want_dir_i,
+  input logic             want_dir_next_i,
   input logic             fire_i
 );
   logic ready, step, dir;
@@ -70,7 +75,8 @@ module stepdir_axis_props #(
   );
 
   stepdir_axis #(
-    .TIM_W(TIM_W)
+    .TIM_W  (TIM_W),
+    .READY_Q(READY_Q)
   ) dut (
     .clk_i,
     .rst_ni,
@@ -88,6 +94,7 @@ module stepdir_axis_props #(
     .fresh_i    (fresh),
     .want_valid_i,
     .want_dir_i,
+    .want_dir_next_i,
     .fire_i,
     .ready_o(ready),
     .step_o (step),
@@ -167,10 +174,12 @@ module stepdir_axis_props #(
   // Reset in the first cycle only; `first` is the cycle after it.
   logic f_init = 1'b1;
   logic f_first = 1'b0;
+  logic p_want_next = 1'b0;  // want_dir_next_i of the previous clock
   always_ff @(posedge clk_i) begin
     f_init  <= 1'b0;
     f_first <= f_init;
     p_first <= f_first;
+    p_want_next <= want_dir_next_i;
     p_len   <= step_len_i;
     p_space <= step_space_i;
     p_setup <= dir_setup_i;
@@ -181,6 +190,7 @@ module stepdir_axis_props #(
   always_comb begin
     assume(rst_ni == !f_init);
     if (fire_i) assume(ready);
+    if (READY_Q && !f_init && !first) assume(want_dir_i == p_want_next);
     if (!f_init) begin
       a_len_high: assert(hi <= c_len);
       a_len_fall: assert(!fall || p_hi == q_len);
