@@ -157,10 +157,9 @@ module ppc_line #(
   // ---------------------------------------------------------------------------
   // Output stage: step/dir timing and position counters.
   step_stage #(
-    .AXES   (AXES),
-    .POS_W  (POS_W),
-    .TIM_W  (TIM_W),
-    .READY_Q(1'b1)
+    .AXES (AXES),
+    .POS_W(POS_W),
+    .TIM_W(TIM_W)
   ) u_out (
     .clk_i,
     .rst_ni,
@@ -170,7 +169,7 @@ module ppc_line #(
     .dir_hold_i,
     .want_valid_i({act_q && y_left, act_q && x_left}),
     .want_dir_i  (neg_q),
-    .want_dir_next_i(buf_take ? buf_neg_q : neg_q),  // neg_q on the next clock
+    .want_dir_next_i(neg_q),  // unused: READY_Q = 0 (measured: READY_Q = 1 costs this core speed)
     .fire_i      ({AXES{advance}} & carry),
     .ready_o     (ready),
     .step_o,
