@@ -176,7 +176,11 @@ def main(argv):
                 fail("%s: %s is a --generic-only result (no iCE40 figures); run synth.sh "
                      "without --generic-only" % (path, r.get("variant")))
             by_name[r["variant"]] = r
-    order = read_variants(vfile) if vfile else sorted(by_name)
+    # Without --variants, the published order (then new variants by name), so a
+    # plain merge renders the table as a --check --variants run does.
+    order = read_variants(vfile) if vfile else \
+        [r["variant"] for r in published] + sorted(v for v in by_name if v not in
+                                                  {r["variant"] for r in published})
     results = [by_name[v] for v in order if v in by_name]
     results += [r for v, r in sorted(by_name.items()) if v not in order]
 
