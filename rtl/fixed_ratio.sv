@@ -14,16 +14,22 @@
 // maximum) the rate word of axis i is
 //     R_i = ceil(|delta_i| 2^FRAC_W / M)
 // (a fixed-point fraction with FRAC_W fraction bits; the major axis gets
-// exactly 1.0 = 2^FRAC_W). One restoring divider per axis, all in parallel:
-// the remainder starts at |delta_i|; each clock gives one quotient bit
-// (bit = rem >= M; rem -= M when set; rem <<= 1). FRAC_W + 1 clocks give the
-// integer bit and the FRAC_W fraction bits; a nonzero final remainder rounds
-// the quotient up as the engine loads it. The first of these clocks also
-// finds M: every pair of magnitudes compared at once (one carry chain deep),
-// M the OR of the magnitudes that are >= all others; the same compares give
-// the integer bits (|delta_i| >= M). Computing M at the take instead (negate,
-// then a chain of AXES compares) made that the critical path (29 MHz on
-// iCE40 HX8K with 4 axes). Rounding up, not to nearest: with
+// exactly 1.0 = 2^FRAC_W). One restoring divider per axis, all in parallel,
+// FRAC_W + 2 clocks:
+//   1. M: every pair of magnitudes compared at once (one carry chain deep),
+//      into registers. Computing M at the take instead (negate, then a chain
+//      of AXES compares) made that the critical path (29 MHz on iCE40 HX8K
+//      with 4 axes); the compares and the remainder step in one clock made
+//      it 61-73 MHz.
+//   2. the integer bit, |delta_i| >= M, i.e. the axis is a maximum (from the
+//      registered compares); M, the OR of the maximal magnitudes (all equal).
+//   3. FRAC_W fraction bits, one a clock: bit = rem >= M; rem -= M when set;
+//      rem = 2 rem + the next dividend bit.
+// The dividend is |delta_i| 2^FRAC_W + M - 1, so the quotient is the
+// rounded-up one itself (no increment after the division, no remainder
+// test); its low FRAC_W bits are M - 1, shifted in from a register loaded
+// with M - 1 in the first fraction clock (they are needed from the second
+// on when FRAC_W >= ACC_W + 1). Rounding up, not to nearest: with
 // any rounding error e_i = R_i / 2^FRAC_W - |delta_i| / M >= 0 a step due
 // exactly on a tick stays on it, so the generator is tick for tick the
 // paper's exact-frequency generator whenever 2 M^2 <= 2^FRAC_W
@@ -31,8 +37,9 @@
 // Zero-length commands (M = 0) skip the division.
 //
 // Latency and gaps: a command is loaded into the engine at the earliest
-// FRAC_W + 2 clocks after the clock that took it (FRAC_W + 1 divider clocks,
-// then the load); a zero-length one 1 clock after. The division runs while
+// FRAC_W + 2 clocks after the clock that took it (on the last of the
+// FRAC_W + 2 divider clocks, with that clock's quotient bit); a zero-length
+// one 1 clock after. The division runs while
 // the previous command runs; the buffer frees on the clock that loads the
 // engine and takes the next command one clock later, so a command is loaded
 // at the earliest FRAC_W + 3 clocks after the previous one. Back-to-back
@@ -98,7 +105,8 @@
 module fixed_ratio #(
   parameter int AXES   = 2,   // axes (1..32)
   parameter int ACC_W  = 32,  // width of each signed delta of cmd_delta_i
-  parameter int FRAC_W = 35,  // rate-word fraction bits: >= ACC_W (exact counts in M ticks)
+  parameter int FRAC_W = 35,  // rate-word fraction bits: >= ACC_W + 1 (exact counts in M ticks;
+                              // the divider's dividend bits, see above)
   parameter int POS_W  = 32,  // position counter width (wraps)
   parameter int TIM_W  = 16,  // width of the step/dir timing settings and counters
   parameter int FEED_W = 16   // feed phase width; feed_i = 2^FEED_W is full feed
@@ -123,40 +131,43 @@ module fixed_ratio #(
   output logic                  busy_o,        // a command buffered or running, or a pulse high
   output logic                  done_o         // one clock per completed command
 );
-  localparam int DivN = FRAC_W + 1;  // quotient bits: the integer bit and FRAC_W fraction bits
+  localparam int DivN = FRAC_W + 2;  // divider clocks: compares, integer bit, FRAC_W fraction bits
   localparam int DivW = $clog2(DivN + 1);  // holds the divider clocks left, 0..DivN
   localparam logic [DivW-1:0] DivClocks = DivW'(DivN);
-  localparam logic [FRAC_W:0] Half = {2'b01, {(FRAC_W - 1) {1'b0}}};  // phase start: one half
 
   // ---------------------------------------------------------------------------
   // Command buffer (one entry): magnitudes and signs of the taken command,
   // M, and the dividers that turn them into rate words while the engine runs.
   logic                  buf_valid_q, buf_valid_d;
-  logic [ACC_W-1:0]      buf_max_q;  // M = max |delta_i|, the divisor (from the first step on)
+  // ~M, M = max |delta_i| the divisor (from divider clock 3 on): inverted, so
+  // that the carry chain of rem - M = rem + ~M + 1 takes a register (M itself
+  // would need an inverter LUT in front of the chain).
+  logic [ACC_W-1:0]      max_n_q;
   logic [DivW-1:0]       div_left_q, div_left_d;  // divider clocks still to run
+  logic                  div_last_q, div_last_d;  // div_left_q == 1: this clock gives the last bit
   logic                  cmd_take;  // a command is taken this clock
   logic                  buf_take;  // the engine loads the buffer this clock
-  logic                  div_run;  // the dividers compute one quotient bit this clock
-  logic                  div_first;  // ...the first one: M and the integer bits
-  logic                  buf_ready;  // the buffered command's rate words are ready
+  logic                  div_run;  // the dividers run one of their clocks
+  logic [2:0]            ph_q, ph_d;  // bit k: divider clock k + 1 (compares, integer bit, first fraction bit)
+  logic                  buf_ready;  // the rate words are ready now or with this clock's quotient bit
   logic [AXES*ACC_W-1:0] buf_mag;  // |delta_i| of the buffered command at [i*ACC_W +: ACC_W]
   logic [AXES*AXES-1:0]  cmp_ge, cmp_eq;  // bit i*AXES + j, i < j: |delta_i| >= (=) |delta_j|
   logic [AXES*AXES-1:0]  ge;  // bit i*AXES + j: |delta_i| >= |delta_j|
-  logic [AXES-1:0]       is_max;  // |delta_i| = M: the axis's integer quotient bit
+  logic [AXES-1:0]       is_max_q, is_max_d;  // |delta_i| = M: the axis's integer quotient bit
   logic [ACC_W-1:0]      max;  // M, the OR of the maximal magnitudes (all equal)
+  logic [FRAC_W-1:0]     low_q, low_d;  // the dividend's low bits (M - 1) still to shift in, next in the MSB
   logic                  cmd_zero;  // the offered command is zero-length
 
   assign cmd_ready_o = !buf_valid_q;
   assign cmd_take    = cmd_valid_i && !buf_valid_q;
   assign div_run     = buf_valid_q && (div_left_q != '0);
-  assign div_first   = div_left_q == DivClocks;
-  assign buf_ready   = buf_valid_q && (div_left_q == '0);
+  assign buf_ready   = buf_valid_q && (div_left_q[DivW-1:1] == '0);
   assign cmd_zero    = (cmd_delta_i == '0);
 
-  // M, a true maximum, in the first divider clock: every pair compared at
-  // once (one carry chain deep, not a chain of compares), then the OR of the
-  // magnitudes that are >= all others. The same compares give the first
-  // quotient bit, |delta_i| >= M.
+  // M, a true maximum: every pair compared at once in the first divider
+  // clock (one carry chain deep, not a chain of compares), is_max_q = the
+  // magnitude is >= all others (the integer quotient bit, |delta_i| >= M);
+  // in the second, M is the OR of the maximal magnitudes.
   for (genvar i = 0; i < AXES; i++) begin : g_max
     for (genvar j = 0; j < AXES; j++) begin : g_pair
       if (i < j) begin : g_cmp  // one compare per pair
@@ -169,12 +180,23 @@ module fixed_ratio #(
         assign ge[i*AXES+j]     = (i == j) || !cmp_ge[j*AXES+i] || cmp_eq[j*AXES+i];
       end
     end
-    assign is_max[i] = &ge[i*AXES +: AXES];
+    assign is_max_d[i] = &ge[i*AXES +: AXES];
   end
   always_comb begin
     max = '0;
-    for (int i = 0; i < AXES; i++) max = max | (is_max[i] ? buf_mag[i*ACC_W +: ACC_W] : '0);
+    for (int i = 0; i < AXES; i++) max = max | (is_max_q[i] ? buf_mag[i*ACC_W +: ACC_W] : '0);
   end
+
+  // The dividend's low FRAC_W bits, M - 1 (< 2^(ACC_W-1)): cleared in the
+  // first divider clock, so that the integer and first fraction clocks
+  // shift in zeros (bits FRAC_W - 1 and FRAC_W - 2 of M - 1, both 0 as
+  // FRAC_W >= ACC_W + 1); loaded in the first fraction clock, aligned so
+  // that its MSB is the bit the second one shifts in; shifted left every
+  // clock.
+  assign low_d = ph_q[2] ? FRAC_W'({~(max_n_q + ACC_W'(1)), 2'b00}) :  // ~(~M + 1) = M - 1
+                 ph_q[0] ? '0 : {low_q[FRAC_W-2:0], 1'b0};
+  // A division's clocks 1-3; an abort clears them (its division ends).
+  assign ph_d  = abort_i ? '0 : {ph_q[1:0], cmd_take && !cmd_zero};
 
   // ---------------------------------------------------------------------------
   // Engine: completion, feed and the per-axis slices below.
@@ -213,22 +235,32 @@ module fixed_ratio #(
     if (buf_take) act_d = 1'b1;
     if (abort_i) act_d = 1'b0;
     buf_valid_d = !abort_i && (cmd_take || (buf_valid_q && !buf_take));
+    // The last divider clock (div_left_q = 1) may load the engine.
     div_left_d  = div_left_q;
     if (div_run) div_left_d = div_left_q - DivW'(1);
     if (cmd_take) div_left_d = cmd_zero ? '0 : DivClocks;
+    div_last_d = div_left_d == DivW'(1);
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       buf_valid_q <= 1'b0;
-      buf_max_q   <= '0;
+      max_n_q     <= '0;
       div_left_q  <= '0;
+      div_last_q  <= 1'b0;
+      ph_q        <= '0;
+      is_max_q    <= '0;
+      low_q       <= '0;
       act_q       <= 1'b0;
       done_q      <= 1'b0;
     end else begin
       buf_valid_q <= buf_valid_d;
       div_left_q  <= div_left_d;
-      if (div_run && div_first) buf_max_q <= max;
+      div_last_q  <= div_last_d;
+      ph_q        <= ph_d;
+      low_q       <= low_d;
+      if (ph_q[0]) is_max_q <= is_max_d;
+      if (ph_q[1]) max_n_q <= ~max;
       act_q  <= act_d;
       done_q <= last;
     end
@@ -244,20 +276,32 @@ module fixed_ratio #(
     // Buffer and divider
     logic [ACC_W-1:0] buf_mag_q;  // |delta_i|
     logic             buf_neg_q;
+    logic             buf_nz_q;  // |delta_i| != 0
+    logic             buf_one_q;  // |delta_i| == 1
     logic [ACC_W-1:0] rem_q, rem_d;  // partial remainder, < 2 M
     logic [ACC_W:0]   diff;  // rem - M
     logic             bit_ge;  // rem >= M: the quotient bit
-    logic [ACC_W-1:0] rem_sub;  // rem - M when bit_ge, else rem (< M)
+    // rem - M when bit_ge, else rem: < M <= 2^(ACC_W-1), its MSB always 0.
+    /* verilator lint_off UNUSEDSIGNAL */
+    logic [ACC_W-1:0] rem_sub, rem_hold;
+    /* verilator lint_on UNUSEDSIGNAL */
     logic [FRAC_W:0]  quot_q, quot_d;  // quotient bits so far, the last in bit 0
-    logic             rnd;  // the remainder is not 0: round the quotient up
-    // Engine: the rate word R = rate_q + rnd_q <= 2^FRAC_W, and the phase
-    // accumulator kept as phase + R, so that the carry is a register.
-    logic [FRAC_W:0]  rate_q;  // floor(|delta_i| 2^FRAC_W / M)
-    logic             rnd_q;
+    // Engine: the rate word R <= 2^FRAC_W, and the phase accumulator kept as
+    // phase + R, so that the carry is a register.
+    logic [FRAC_W:0]  rate_q;  // R = ceil(|delta_i| 2^FRAC_W / M)
     logic [FRAC_W:0]  sum_q, sum_d;  // phase + R < 2^(FRAC_W+1); phase = sum_q[FRAC_W-1:0]
     logic [FRAC_W:0]  sum_next;  // the next tick's phase + R
-    logic [FRAC_W:0]  sum_load;  // one half + R
+    /* verilator lint_off UNUSEDSIGNAL */
+    logic [FRAC_W:0]  sum_load;  // one half + R (bit 0: load_bit or sum0_other)
+    /* verilator lint_on UNUSEDSIGNAL */
+    logic [FRAC_W:0]  rate_load;  // R, when the engine loads: quot_d
+    logic             load_bit;  // ...in the last divider clock, its bit 0 is this clock's quotient bit
+    (* keep *) logic  sum0_other;  // sum_d[0] unless a load takes load_bit (see below)
     logic [ACC_W-1:0] cnt_q, cnt_d;  // pulses still to send
+    // cnt_q != 0 and cnt_q == 1 as registers, decided a clock ahead: the
+    // stall and completion logic reads no compare of the counter.
+    logic             left_q, left_d;
+    logic             one_q, one_d;
     logic             neg_q;
 
     assign delta   = cmd_delta_i[i*ACC_W +: ACC_W];
@@ -267,37 +311,59 @@ module fixed_ratio #(
     assign buf_mag[i*ACC_W +: ACC_W] = buf_mag_q;
 
     // One restoring-division step: rem < 2 M <= 2^ACC_W before it, < M after
-    // the subtraction, so the shifted remainder still fits ACC_W bits. The
-    // first step's bit is is_max (rem = |delta_i| <= M then, M not yet in
-    // buf_max_q): rem becomes 0 or 2 |delta_i|.
-    assign diff    = {1'b0, rem_q} - {1'b0, buf_max_q};
-    assign bit_ge  = div_first ? is_max[i] : !diff[ACC_W];
-    assign rem_sub = div_first ? (is_max[i] ? '0 : rem_q) : (bit_ge ? diff[ACC_W-1:0] : rem_q);
-    assign rem_d   = cmd_take ? cmd_mag : div_run ? rem_sub << 1 : rem_q;
-    assign quot_d  = cmd_take ? '0 : div_run ? {quot_q[FRAC_W-1:0], bit_ge} : quot_q;
-    // After FRAC_W + 1 steps quot_q = floor(|delta_i| 2^FRAC_W / M); a
-    // nonzero remainder rounds it up (quot_q < 2^FRAC_W then: no overflow).
-    assign rnd     = rem_q != '0;
+    // the subtraction, so 2 rem + a bit still fits ACC_W bits. The integer
+    // step (divider clock 2) starts from rem = |delta_i| <= M (M not yet in
+    // max_n_q): its bit is is_max_q, and rem becomes 0 or 2 |delta_i|. In
+    // clock 1 the step's result is not used (clock 2 overwrites rem, and
+    // its quotient bit is shifted out).
+    assign diff    = {1'b0, rem_q} - {1'b0, ~max_n_q};
+    assign bit_ge  = ph_q[1] ? is_max_q[i] : !diff[ACC_W];
+    // rem_hold: the remainder if the step does not subtract, from registers
+    // only, so that one LUT follows the carry chain.
+    assign rem_hold = ph_q[1] ? (is_max_q[i] ? '0 : buf_mag_q) : rem_q;
+    assign rem_sub  = (bit_ge && !ph_q[1]) ? diff[ACC_W-1:0] : rem_hold;
+    assign rem_d    = div_run ? {rem_sub[ACC_W-2:0], low_q[FRAC_W-1]} : rem_q;
+    // After the FRAC_W + 1 steps of clocks 2 .. FRAC_W + 2 (quot_d in the
+    // last) the quotient is ceil(|delta_i| 2^FRAC_W / M) <= 2^FRAC_W.
+    assign quot_d  = div_run ? {quot_q[FRAC_W-1:0], bit_ge} : quot_q;
 
     // Engine: a tick adds R to the phase; the carry out is a step.
     assign carry[i] = sum_q[FRAC_W];
-    assign left[i]  = cnt_q != '0;
-    assign fin[i]   = !left[i] || (cnt_q == ACC_W'(1) && carry[i]);
+    assign left[i]  = left_q;
+    assign fin[i]   = !left_q || (one_q && carry[i]);
     assign neg[i]   = neg_q;
     assign neg_next[i] = buf_take ? buf_neg_q : neg_q;
-    assign sum_next = {1'b0, sum_q[FRAC_W-1:0]} + rate_q + {{FRAC_W{1'b0}}, rnd_q};
-    assign sum_load = Half + quot_q + {{FRAC_W{1'b0}}, rnd};
-    assign sum_d    = buf_take ? sum_load : advance ? sum_next : sum_q;
+    assign sum_next = {1'b0, sum_q[FRAC_W-1:0]} + rate_q;
+    // One half + R, R = quot_d <= 2^FRAC_W: only bits FRAC_W and FRAC_W - 1
+    // change (written out: an adder here would put a carry chain on the load).
+    // The engine loads in the last divider clock or later (buf_ready), so
+    // R = quot_d, from registers but for the last clock's quotient bit. That
+    // bit comes out of the remainder's carry chain: it gets its own LUT in
+    // front of the sum_q[0] flip-flop (sum0_other is kept as a net, else
+    // ABC, which sees the chain's carry as early as a register, buries it
+    // two LUTs deep).
+    assign load_bit  = !diff[ACC_W];
+    assign rate_load = div_last_q ? {quot_q[FRAC_W-1:0], load_bit} : quot_q;
+    assign sum_load  = {rate_load[FRAC_W] || rate_load[FRAC_W-1],
+                        rate_load[FRAC_W] || !rate_load[FRAC_W-1], rate_load[FRAC_W-2:0]};
+    assign sum0_other = buf_take ? quot_q[0] : advance ? sum_next[0] : sum_q[0];
+    assign sum_d     = {buf_take ? sum_load[FRAC_W:1] : advance ? sum_next[FRAC_W:1] : sum_q[FRAC_W:1],
+                        (buf_take && div_last_q) ? load_bit : sum0_other};
     assign cnt_d    = buf_take ? buf_mag_q : (advance && must[i]) ? cnt_q - ACC_W'(1) : cnt_q;
+    assign left_d   = buf_take ? buf_nz_q : (advance && must[i]) ? !one_q : left_q;
+    assign one_d    = buf_take ? buf_one_q : (advance && must[i]) ? (cnt_q == ACC_W'(2)) : one_q;
 
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
         buf_mag_q <= '0;
         buf_neg_q <= 1'b0;
+        buf_nz_q  <= 1'b0;
+        buf_one_q <= 1'b0;
+        left_q    <= 1'b0;
+        one_q     <= 1'b0;
         rem_q     <= '0;
         quot_q    <= '0;
         rate_q    <= '0;
-        rnd_q     <= 1'b0;
         sum_q     <= '0;
         cnt_q     <= '0;
         neg_q     <= 1'b0;
@@ -305,16 +371,19 @@ module fixed_ratio #(
         if (cmd_take) begin
           buf_mag_q <= cmd_mag;
           buf_neg_q <= cmd_neg;
+          buf_nz_q  <= delta != '0;
+          buf_one_q <= (delta == ACC_W'(1)) || (delta == '1);  // +1 or -1
         end
         rem_q  <= rem_d;
         quot_q <= quot_d;
         if (buf_take) begin
-          rate_q <= quot_q;
-          rnd_q  <= rnd;
+          rate_q <= rate_load;
           neg_q  <= buf_neg_q;
         end
         sum_q <= sum_d;
         cnt_q <= cnt_d;
+        left_q <= left_d;
+        one_q  <= one_d;
       end
     end
   end
