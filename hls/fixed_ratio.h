@@ -38,8 +38,9 @@ class FixedRatio {
                 "(rtl/fixed_ratio.sv)");
   static_assert(FRAC_W <= 62, "FRAC_W out of range (phase + rate needs FRAC_W + 1 bits)");
   static_assert(POS_W >= 2 && POS_W <= 64, "POS_W out of range");
-  static constexpr int DIV_N = FRAC_W + 2;  // divider clocks: compares, integer bit, FRAC_W fraction bits
-  static constexpr int DIV_W = [] {         // $clog2(DIV_N + 1)
+  static constexpr int DIV_N =
+      FRAC_W + 2;                    // divider clocks: compares, integer bit, FRAC_W fraction bits
+  static constexpr int DIV_W = [] {  // $clog2(DIV_N + 1)
     int w = 0;
     while ((1 << w) < DIV_N + 1) ++w;
     return w;
@@ -135,7 +136,8 @@ class FixedRatio {
         const diff_t diff = diff_t(rem_q_[i]) - diff_t(buf_max_q_);
         const bool ge = ph_q_[1] ? is_max_q_[i] : !diff[ACC_W];
         const mag_t rem = ph_q_[1] ? (is_max_q_[i] ? mag_t(0) : buf_mag_q_[i])
-                                   : ge ? mag_t(diff.range(ACC_W - 1, 0)) : rem_q_[i];
+                          : ge     ? mag_t(diff.range(ACC_W - 1, 0))
+                                   : rem_q_[i];
         // rem < M <= 2^(ACC_W-1): nothing shifts out.
         rem_q_[i] = mag_t((rem << 1) | mag_t(shift_in ? 1 : 0));
         quot[i] = rate_t((quot_q_[i] << 1) | rate_t(ge ? 1 : 0));
@@ -144,7 +146,8 @@ class FixedRatio {
       if (ph_q_[0])
         for (int i = 0; i < AXES; ++i) {
           is_max_q_[i] = true;
-          for (int j = 0; j < AXES; ++j) is_max_q_[i] = is_max_q_[i] && buf_mag_q_[i] >= buf_mag_q_[j];
+          for (int j = 0; j < AXES; ++j)
+            is_max_q_[i] = is_max_q_[i] && buf_mag_q_[i] >= buf_mag_q_[j];
         }
       if (ph_q_[1]) buf_max_q_ = max;
       div_left_q_ = div_left_q_ - 1;
@@ -209,9 +212,10 @@ class FixedRatio {
   bool buf_neg_q_[AXES];
   mag_t buf_max_q_;  // M, from divider clock 3 on (the RTL keeps ~M)
   div_t div_left_q_;
-  bool ph_q_[3];            // divider clocks 1, 2, 3
-  bool is_max_q_[AXES];     // |delta_i| = M: the integer quotient bit
-  low_t low_q_;             // the dividend's low bits still to shift in, next in the MSB
+  bool ph_q_[3];         // divider clocks 1, 2, 3
+  bool is_max_q_[AXES];  // |delta_i| = M: the integer quotient bit (the RTL keeps the pairwise
+                         // compares)
+  low_t low_q_;          // the dividend's low bits still to shift in, next in the MSB
   mag_t rem_q_[AXES];
   rate_t quot_q_[AXES];
   // Engine.

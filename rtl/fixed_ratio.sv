@@ -152,8 +152,9 @@ module fixed_ratio #(
   logic                  buf_ready;  // the rate words are ready now or with this clock's quotient bit
   logic [AXES*ACC_W-1:0] buf_mag;  // |delta_i| of the buffered command at [i*ACC_W +: ACC_W]
   logic [AXES*AXES-1:0]  cmp_ge, cmp_eq;  // bit i*AXES + j, i < j: |delta_i| >= (=) |delta_j|
-  logic [AXES*AXES-1:0]  ge;  // bit i*AXES + j: |delta_i| >= |delta_j|
-  logic [AXES-1:0]       is_max_q, is_max_d;  // |delta_i| = M: the axis's integer quotient bit
+  logic [AXES*AXES-1:0]  ge_q, eq_q;  // ...registered in divider clock 1
+  logic [AXES*AXES-1:0]  ge;  // bit i*AXES + j: |delta_i| >= |delta_j|, from ge_q and eq_q
+  logic [AXES-1:0]       is_max;  // |delta_i| = M: the axis's integer quotient bit
   logic [ACC_W-1:0]      max;  // M, the OR of the maximal magnitudes (all equal)
   logic [FRAC_W-1:0]     low_q, low_d;  // the dividend's low bits (M - 1) still to shift in, next in the MSB
   logic                  cmd_zero;  // the offered command is zero-length
@@ -165,26 +166,27 @@ module fixed_ratio #(
   assign cmd_zero    = (cmd_delta_i == '0);
 
   // M, a true maximum: every pair compared at once in the first divider
-  // clock (one carry chain deep, not a chain of compares), is_max_q = the
-  // magnitude is >= all others (the integer quotient bit, |delta_i| >= M);
-  // in the second, M is the OR of the maximal magnitudes.
+  // clock (one carry chain deep, not a chain of compares) into registers; in
+  // the second, is_max = the magnitude is >= all others (the integer
+  // quotient bit, |delta_i| >= M) and M is the OR of the maximal
+  // magnitudes.
   for (genvar i = 0; i < AXES; i++) begin : g_max
     for (genvar j = 0; j < AXES; j++) begin : g_pair
       if (i < j) begin : g_cmp  // one compare per pair
         assign cmp_ge[i*AXES+j] = buf_mag[i*ACC_W +: ACC_W] >= buf_mag[j*ACC_W +: ACC_W];
         assign cmp_eq[i*AXES+j] = buf_mag[i*ACC_W +: ACC_W] == buf_mag[j*ACC_W +: ACC_W];
-        assign ge[i*AXES+j]     = cmp_ge[i*AXES+j];
+        assign ge[i*AXES+j]     = ge_q[i*AXES+j];
       end else begin : g_mirror  // j <= i: from the pair's compare
         assign cmp_ge[i*AXES+j] = 1'b0;
         assign cmp_eq[i*AXES+j] = 1'b0;
-        assign ge[i*AXES+j]     = (i == j) || !cmp_ge[j*AXES+i] || cmp_eq[j*AXES+i];
+        assign ge[i*AXES+j]     = (i == j) || !ge_q[j*AXES+i] || eq_q[j*AXES+i];
       end
     end
-    assign is_max_d[i] = &ge[i*AXES +: AXES];
+    assign is_max[i] = &ge[i*AXES +: AXES];
   end
   always_comb begin
     max = '0;
-    for (int i = 0; i < AXES; i++) max = max | (is_max_q[i] ? buf_mag[i*ACC_W +: ACC_W] : '0);
+    for (int i = 0; i < AXES; i++) max = max | (is_max[i] ? buf_mag[i*ACC_W +: ACC_W] : '0);
   end
 
   // The dividend's low FRAC_W bits, M - 1 (< 2^(ACC_W-1)): cleared in the
@@ -210,12 +212,21 @@ module fixed_ratio #(
   logic [AXES-1:0] neg_next;  // neg on the next clock (the stage decides ready a clock ahead)
   logic [AXES-1:0] ready;  // the axis may start a pulse on the next clock
   logic            tick, stall, advance, last;
+  logic            take_adv, take_idle;  // the engine loads the buffer if it advances, if not
 
-  assign must     = carry & left;
-  assign stall    = |(must & ~ready);
-  assign advance  = tick && !stall && !abort_i;
-  assign last     = advance && (&fin);
-  assign buf_take = buf_ready && (!act_q || last) && !abort_i;
+  // Every next state below that the advance decides is written
+  // advance ? (its value if the engine advances) : (its value if not), both
+  // from registers (fin, the counters' compares, buf_ready are registers or
+  // small cones of them): the clock's late signal enters each register at
+  // its last gate, as in rtl/dda_line.sv. A tick comes only with act_q
+  // (rtl/feed_accum.sv) and never with an abort.
+  assign must      = carry & left;
+  assign stall     = |(must & ~ready);
+  assign advance   = tick && !stall && !abort_i;
+  assign last      = advance && (&fin);
+  assign take_adv  = buf_ready && (&fin);
+  assign take_idle = buf_ready && !act_q && !abort_i;
+  assign buf_take  = advance ? take_adv : take_idle;
 
   feed_accum #(
     .FEED_W(FEED_W)
@@ -230,11 +241,9 @@ module fixed_ratio #(
   );
 
   always_comb begin
-    act_d = act_q;
-    if (last) act_d = 1'b0;
-    if (buf_take) act_d = 1'b1;
-    if (abort_i) act_d = 1'b0;
-    buf_valid_d = !abort_i && (cmd_take || (buf_valid_q && !buf_take));
+    act_d = advance ? (!(&fin) || take_adv) : ((act_q && !abort_i) || take_idle);
+    buf_valid_d = advance ? (cmd_take || (buf_valid_q && !take_adv)) :
+                            (!abort_i && (cmd_take || (buf_valid_q && !take_idle)));
     // The last divider clock (div_left_q = 1) may load the engine.
     div_left_d  = div_left_q;
     if (div_run) div_left_d = div_left_q - DivW'(1);
@@ -249,7 +258,8 @@ module fixed_ratio #(
       div_left_q  <= '0;
       div_last_q  <= 1'b0;
       ph_q        <= '0;
-      is_max_q    <= '0;
+      ge_q        <= '0;
+      eq_q        <= '0;
       low_q       <= '0;
       act_q       <= 1'b0;
       done_q      <= 1'b0;
@@ -259,7 +269,10 @@ module fixed_ratio #(
       div_last_q  <= div_last_d;
       ph_q        <= ph_d;
       low_q       <= low_d;
-      if (ph_q[0]) is_max_q <= is_max_d;
+      if (ph_q[0]) begin
+        ge_q <= cmp_ge;
+        eq_q <= cmp_eq;
+      end
       if (ph_q[1]) max_n_q <= ~max;
       act_q  <= act_d;
       done_q <= last;
@@ -297,6 +310,7 @@ module fixed_ratio #(
     logic [FRAC_W:0]  rate_load;  // R, when the engine loads: quot_d
     logic             load_bit;  // ...in the last divider clock, its bit 0 is this clock's quotient bit
     (* keep *) logic  sum0_other;  // sum_d[0] unless a load takes load_bit (see below)
+    (* keep *) logic  use_bit;  // a load in the last divider clock: sum_d[0] = load_bit
     logic [ACC_W-1:0] cnt_q, cnt_d;  // pulses still to send
     // cnt_q != 0 and cnt_q == 1 as registers, decided a clock ahead: the
     // stall and completion logic reads no compare of the counter.
@@ -313,14 +327,14 @@ module fixed_ratio #(
     // One restoring-division step: rem < 2 M <= 2^ACC_W before it, < M after
     // the subtraction, so 2 rem + a bit still fits ACC_W bits. The integer
     // step (divider clock 2) starts from rem = |delta_i| <= M (M not yet in
-    // max_n_q): its bit is is_max_q, and rem becomes 0 or 2 |delta_i|. In
+    // max_n_q): its bit is is_max, and rem becomes 0 or 2 |delta_i|. In
     // clock 1 the step's result is not used (clock 2 overwrites rem, and
     // its quotient bit is shifted out).
     assign diff    = {1'b0, rem_q} - {1'b0, ~max_n_q};
-    assign bit_ge  = ph_q[1] ? is_max_q[i] : !diff[ACC_W];
+    assign bit_ge  = ph_q[1] ? is_max[i] : !diff[ACC_W];
     // rem_hold: the remainder if the step does not subtract, from registers
     // only, so that one LUT follows the carry chain.
-    assign rem_hold = ph_q[1] ? (is_max_q[i] ? '0 : buf_mag_q) : rem_q;
+    assign rem_hold = ph_q[1] ? (is_max[i] ? '0 : buf_mag_q) : rem_q;
     assign rem_sub  = (bit_ge && !ph_q[1]) ? diff[ACC_W-1:0] : rem_hold;
     assign rem_d    = div_run ? {rem_sub[ACC_W-2:0], low_q[FRAC_W-1]} : rem_q;
     // After the FRAC_W + 1 steps of clocks 2 .. FRAC_W + 2 (quot_d in the
@@ -346,12 +360,18 @@ module fixed_ratio #(
     assign rate_load = div_last_q ? {quot_q[FRAC_W-1:0], load_bit} : quot_q;
     assign sum_load  = {rate_load[FRAC_W] || rate_load[FRAC_W-1],
                         rate_load[FRAC_W] || !rate_load[FRAC_W-1], rate_load[FRAC_W-2:0]};
-    assign sum0_other = buf_take ? quot_q[0] : advance ? sum_next[0] : sum_q[0];
-    assign sum_d     = {buf_take ? sum_load[FRAC_W:1] : advance ? sum_next[FRAC_W:1] : sum_q[FRAC_W:1],
-                        (buf_take && div_last_q) ? load_bit : sum0_other};
-    assign cnt_d    = buf_take ? buf_mag_q : (advance && must[i]) ? cnt_q - ACC_W'(1) : cnt_q;
-    assign left_d   = buf_take ? buf_nz_q : (advance && must[i]) ? !one_q : left_q;
-    assign one_d    = buf_take ? buf_one_q : (advance && must[i]) ? (cnt_q == ACC_W'(2)) : one_q;
+    assign sum0_other = advance ? (take_adv ? quot_q[0] : sum_next[0]) :
+                                  (take_idle ? quot_q[0] : sum_q[0]);
+    assign use_bit    = div_last_q && (advance ? take_adv : take_idle);
+    assign sum_d      = {advance ? (take_adv ? sum_load[FRAC_W:1] : sum_next[FRAC_W:1]) :
+                                   (take_idle ? sum_load[FRAC_W:1] : sum_q[FRAC_W:1]),
+                         use_bit ? load_bit : sum0_other};
+    assign cnt_d  = advance ? (take_adv ? buf_mag_q : must[i] ? cnt_q - ACC_W'(1) : cnt_q) :
+                              (take_idle ? buf_mag_q : cnt_q);
+    assign left_d = advance ? (take_adv ? buf_nz_q : must[i] ? !one_q : left_q) :
+                              (take_idle ? buf_nz_q : left_q);
+    assign one_d  = advance ? (take_adv ? buf_one_q : must[i] ? (cnt_q == ACC_W'(2)) : one_q) :
+                              (take_idle ? buf_one_q : one_q);
 
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin

@@ -131,10 +131,10 @@ TYPED_TEST(FixedRatioLockstep, PaperLines) {
 // Completion in exactly M engine ticks. At feed 1/2 with step/dir timing
 // 1,1,1,1 nothing stalls (a tick every second clock, an axis may pulse every
 // second clock), so the clock count is exact: 2 reset edges, the edge that
-// takes the command, FRAC_W + 1 divider edges, the edge that loads the
-// engine, ticks on the 2nd, 4th, ... edge after it (the feed phase starts at
+// takes the command, FRAC_W + 2 divider edges (the last one loads the
+// engine), ticks on the 2nd, 4th, ... edge after it (the feed phase starts at
 // 0), the edge the last pulse falls (busy_o low), 2 tail edges:
-//     cycles = 2 + 1 + (FRAC_W + 1) + 1 + 2 M + 1 + 2 = 2 M + FRAC_W + 8,
+//     cycles = 2 + 1 + (FRAC_W + 2) + 2 M + 1 + 2 = 2 M + FRAC_W + 8,
 // the first step on case cycle FRAC_W + 7, the major axis stepping on every
 // tick: M moves 2 clocks apart.
 TYPED_TEST(FixedRatioLockstep, CompletionInMTicksExactClocks) {
@@ -162,10 +162,10 @@ TYPED_TEST(FixedRatioLockstep, CompletionInMTicksExactClocks) {
   EXPECT_EQ(r[0].cycles, 2u + 1 + 1 + 2 + 2);
 }
 
-// The divider's gap. A command's rate words are ready FRAC_W + 1 clocks
-// after the clock that took it, so it is loaded at the earliest FRAC_W + 3
-// clocks after the previous command's load (the buffer frees on that load
-// and takes the next command one clock later). Back-to-back commands run
+// The divider's gap. A command's rate words are ready with the last of the
+// FRAC_W + 2 divider clocks after the clock that took it, so it is loaded at
+// the earliest FRAC_W + 3 clocks after the previous command's load (the
+// buffer frees on that load and takes the next command one clock later). Back-to-back commands run
 // without a gap when each runs at least FRAC_W + 3 clocks from its load to
 // its last tick; otherwise the engine idles FRAC_W + 3 minus that many
 // clocks. At feed 1/2 without stalls a command runs 2 max(M, 1) clocks:

@@ -49,7 +49,7 @@ struct Adapter : DeltaPayload<Adapter> {
     models::FixedRatioMove move_;
     models::ErrorBound bound_;
   };
-  // Engine ticks: max(M, 1). (The FRAC_W + 1 divider clocks overlap the
+  // Engine ticks: max(M, 1). (The FRAC_W + 2 divider clocks overlap the
   // previous command; the hang budget's per-command margin covers them
   // where they do not.)
   static uint64_t work(const Command& c, const CoreLimits&);
