@@ -207,7 +207,10 @@ module fixed_ratio #(
   logic [AXES-1:0] left;  // the axis still has pulses to send
   logic [AXES-1:0] carry;  // its phase carries on this tick
   logic [AXES-1:0] must;  // it steps on this tick
-  logic [AXES-1:0] fin;  // it has no pulse left after this tick
+  logic [AXES-1:0] major;  // the axis is a major axis of the running command (|delta_i| = M)
+  logic [AXES-1:0] two;  // its pulse counter is at 2
+  logic [AXES-1:0] buf_le1;  // the buffered command's |delta_i| <= 1
+  logic            last_q, last_d;  // the running command's next tick is its last
   logic [AXES-1:0] neg;  // direction of the running command (1: negative)
   logic [AXES-1:0] neg_next;  // neg on the next clock (the stage decides ready a clock ahead)
   logic [AXES-1:0] ready;  // the axis may start a pulse on the next clock
@@ -216,15 +219,22 @@ module fixed_ratio #(
 
   // Every next state below that the advance decides is written
   // advance ? (its value if the engine advances) : (its value if not), both
-  // from registers (fin, the counters' compares, buf_ready are registers or
-  // small cones of them): the clock's late signal enters each register at
+  // from registers (last_q, the counters' compares, buf_ready are registers
+  // or small cones of them): the clock's late signal enters each register at
   // its last gate, as in rtl/dda_line.sv. A tick comes only with act_q
   // (rtl/feed_accum.sv) and never with an abort.
+  // Completion: every command completes in exactly max(M, 1) ticks, and a
+  // major axis (rate 1.0) steps on every one of them, so its pulse counter
+  // counts the ticks left; no other axis has a pulse left after tick M
+  // (models/fixed_ratio_model.h). So "every axis has sent its last pulse
+  // with this tick" is last_q: set at the load when M <= 1, else when a
+  // tick leaves a major axis's counter at 1. (The HLS core tests every
+  // axis's counter instead; the lockstep compares the two.)
   assign must      = carry & left;
   assign stall     = |(must & ~ready);
   assign advance   = tick && !stall && !abort_i;
-  assign last      = advance && (&fin);
-  assign take_adv  = buf_ready && (&fin);
+  assign last      = advance && last_q;
+  assign take_adv  = buf_ready && last_q;
   assign take_idle = buf_ready && !act_q && !abort_i;
   assign buf_take  = advance ? take_adv : take_idle;
 
@@ -241,7 +251,8 @@ module fixed_ratio #(
   );
 
   always_comb begin
-    act_d = advance ? (!(&fin) || take_adv) : ((act_q && !abort_i) || take_idle);
+    act_d = advance ? (!last_q || take_adv) : ((act_q && !abort_i) || take_idle);
+    last_d = advance ? (take_adv ? (&buf_le1) : |(major & two)) : (take_idle ? (&buf_le1) : last_q);
     buf_valid_d = advance ? (cmd_take || (buf_valid_q && !take_adv)) :
                             (!abort_i && (cmd_take || (buf_valid_q && !take_idle)));
     // The last divider clock (div_left_q = 1) may load the engine.
@@ -262,6 +273,7 @@ module fixed_ratio #(
       eq_q        <= '0;
       low_q       <= '0;
       act_q       <= 1'b0;
+      last_q      <= 1'b0;
       done_q      <= 1'b0;
     end else begin
       buf_valid_q <= buf_valid_d;
@@ -275,6 +287,7 @@ module fixed_ratio #(
       end
       if (ph_q[1]) max_n_q <= ~max;
       act_q  <= act_d;
+      last_q <= last_d;
       done_q <= last;
     end
   end
@@ -316,6 +329,7 @@ module fixed_ratio #(
     // stall and completion logic reads no compare of the counter.
     logic             left_q, left_d;
     logic             one_q, one_d;
+    logic             major_q;  // |delta_i| = M for the running command
     logic             neg_q;
 
     assign delta   = cmd_delta_i[i*ACC_W +: ACC_W];
@@ -344,7 +358,9 @@ module fixed_ratio #(
     // Engine: a tick adds R to the phase; the carry out is a step.
     assign carry[i] = sum_q[FRAC_W];
     assign left[i]  = left_q;
-    assign fin[i]   = !left_q || (one_q && carry[i]);
+    assign two[i]   = cnt_q == ACC_W'(2);
+    assign major[i] = major_q;
+    assign buf_le1[i] = !buf_nz_q || buf_one_q;
     assign neg[i]   = neg_q;
     assign neg_next[i] = buf_take ? buf_neg_q : neg_q;
     assign sum_next = {1'b0, sum_q[FRAC_W-1:0]} + rate_q;
@@ -370,7 +386,7 @@ module fixed_ratio #(
                               (take_idle ? buf_mag_q : cnt_q);
     assign left_d = advance ? (take_adv ? buf_nz_q : must[i] ? !one_q : left_q) :
                               (take_idle ? buf_nz_q : left_q);
-    assign one_d  = advance ? (take_adv ? buf_one_q : must[i] ? (cnt_q == ACC_W'(2)) : one_q) :
+    assign one_d  = advance ? (take_adv ? buf_one_q : must[i] ? two[i] : one_q) :
                               (take_idle ? buf_one_q : one_q);
 
     always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -387,6 +403,7 @@ module fixed_ratio #(
         sum_q     <= '0;
         cnt_q     <= '0;
         neg_q     <= 1'b0;
+        major_q   <= 1'b0;
       end else begin
         if (cmd_take) begin
           buf_mag_q <= cmd_mag;
@@ -397,8 +414,9 @@ module fixed_ratio #(
         rem_q  <= rem_d;
         quot_q <= quot_d;
         if (buf_take) begin
-          rate_q <= rate_load;
-          neg_q  <= buf_neg_q;
+          rate_q  <= rate_load;
+          neg_q   <= buf_neg_q;
+          major_q <= is_max[i];  // the compares of the buffered command (still in ge_q, eq_q)
         end
         sum_q <= sum_d;
         cnt_q <= cnt_d;
