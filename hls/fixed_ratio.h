@@ -107,6 +107,8 @@ class FixedRatio {
     }
     const bool tick = feed_.tick(act_q_);
     const bool advance = tick && !stall && !in.abort;
+    // The RTL keeps this as a register from a major axis's counter (last_q,
+    // rtl/fixed_ratio.sv); both are "the command's tick max(M, 1)".
     const bool last = advance && all_fin;
     const bool div_run = buf_valid_q_ && div_left_q_ != 0;
     // Ready now, or with this clock's quotient bit (the last divider clock).
