@@ -105,8 +105,7 @@
 module fixed_ratio #(
   parameter int AXES   = 2,   // axes (1..32)
   parameter int ACC_W  = 32,  // width of each signed delta of cmd_delta_i
-  parameter int FRAC_W = 35,  // rate-word fraction bits: >= ACC_W + 1 (exact counts in M ticks;
-                              // the divider's dividend bits, see above)
+  parameter int FRAC_W = 35,  // rate-word fraction bits: >= ACC_W + 1 (exact counts; the divider)
   parameter int POS_W  = 32,  // position counter width (wraps)
   parameter int TIM_W  = 16,  // width of the step/dir timing settings and counters
   parameter int FEED_W = 16   // feed phase width; feed_i = 2^FEED_W is full feed
@@ -440,11 +439,11 @@ module fixed_ratio #(
     .step_space_i,
     .dir_setup_i,
     .dir_hold_i,
-    .want_valid_i({AXES{act_q}} & left),
-    .want_dir_i  (neg),
+    .want_valid_i   ({AXES{act_q}} & left),
+    .want_dir_i     (neg),
     .want_dir_next_i(neg_next),
-    .fire_i      ({AXES{advance}} & must),
-    .ready_o     (ready),
+    .fire_i         ({AXES{advance}} & must),
+    .ready_o        (ready),
     .step_o,
     .dir_o,
     .pos_o
