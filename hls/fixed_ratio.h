@@ -164,7 +164,8 @@ class FixedRatio {
       low_q_ = low_t(low_q_ << 1);
     }
     for (int k = 2; k > 0; --k) ph_q_[k] = ph_q_[k - 1] && !in.abort;
-    ph_q_[0] = cmd_take && !in.abort && !cmd_zero(in.cmd);
+    const bool take_zero = cmd_take && cmd_zero(in.cmd);  // a zero-length command: no division
+    ph_q_[0] = cmd_take && !in.abort && !take_zero;
 
     // Engine registers: the phase kept as phase + R (its carry is the next
     // tick's step).
@@ -183,7 +184,7 @@ class FixedRatio {
     if (last) act_q_ = false;
     if (buf_take) act_q_ = true;
     if (in.abort) act_q_ = false;
-    if (cmd_take) load_buffer(in.cmd);
+    if (cmd_take) load_buffer(in.cmd, take_zero);
     buf_valid_q_ = !in.abort && (cmd_take || (buf_valid_q_ && !buf_take));
     done_q_ = last;
   }
@@ -199,13 +200,13 @@ class FixedRatio {
 
   // Taking a command stores the magnitudes and the signs, and starts the
   // dividers; a zero-length command needs no division.
-  void load_buffer(const Own& cmd) {
+  void load_buffer(const Own& cmd, bool zero) {
     for (int i = 0; i < AXES; ++i) {
       buf_neg_q_[i] = cmd.delta[i][ACC_W - 1];
       // |-2^(ACC_W-1)| = 2^(ACC_W-1) still fits ACC_W unsigned bits.
       buf_mag_q_[i] = buf_neg_q_[i] ? mag_t(-cmd.delta[i]) : cmd.delta[i];
     }
-    div_left_q_ = cmd_zero(cmd) ? 0 : DIV_N;
+    div_left_q_ = zero ? 0 : DIV_N;
   }
 
   // One-entry command buffer and its dividers.
