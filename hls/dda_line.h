@@ -89,6 +89,7 @@ class DdaLine {
       carry[i] = acc_[i].carry();
       want.want_valid[i] = moves_q_[i];
       want.want_dir[i] = neg_q_[i];
+      // (The RTL has this per axis as a register, the stage's block_o.)
       if (carry[i] && !out_.ready(i, want)) stall = true;
     }
     const bool tick = feed_.tick(act_q_);

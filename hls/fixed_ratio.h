@@ -103,6 +103,7 @@ class FixedRatio {
       all_fin = all_fin && (!left[i] || (cnt_q_[i] == 1 && carry[i]));
       want.want_valid[i] = act_q_ && left[i];
       want.want_dir[i] = neg_q_[i];
+      // (The RTL has this per axis as a register, the stage's block_o.)
       if (must[i] && !out_.ready(i, want)) stall = true;
     }
     const bool tick = feed_.tick(act_q_);

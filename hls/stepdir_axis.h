@@ -26,7 +26,9 @@ class StepdirAxis {
 
   // A pulse in direction want_dir may start on the next clock (ready_o with
   // READY_Q = 0; with READY_Q = 1 the RTL registers the same value a clock
-  // ahead from the engine's next want_dir; want_valid is the engine's business).
+  // ahead from the engine's next want_dir, and block_o, "wanted and not
+  // ready", from its next want: the engines here compute their stall from
+  // this instead; want_valid is the engine's business).
   bool ready(bool want_dir) const { return want_dir ? ok_neg_q_ : ok_pos_q_; }
 
   // One rising clock edge.

@@ -37,7 +37,8 @@ module dda_axis #(
   input  logic [W-1:0] b_mag_i,  // the next command's magnitude
   input  logic [W:0]   b_dc_i,   // the next command's increment after a carry (MODULUS_2N = 0)
   input  logic [W-1:0] hm_i,     // the running command's high mask (MODULUS_2N = 1)
-  output logic         carry_o   // this iteration steps the axis
+  output logic         carry_o,  // this iteration steps the axis
+  output logic         carry_next_o  // carry_o of the next clock (from the clock's late en_i)
 );
   logic [W-1:0] mag_q;
   logic [W:0]   s_q, s_d;
@@ -50,6 +51,15 @@ module dda_axis #(
     assign unused_dc = ^b_dc_i;
     assign sum       = {1'b0, s_q[W-1:0]} + {1'b0, mag_q};
     assign s_d       = pre_i ? {|(a0_i & b_mag_i), a0_i ^ b_mag_i} : {sum[W], sum[W-1:0] | hm_i};
+    // The next carry, with the add's carry out (the latest signal: the end of
+    // the carry chain) choosing in the last LUT. The two nets are kept: ABC
+    // sees a carry chain's output as early as a register and would otherwise
+    // put it under the late en_i.
+    (* keep *) logic take_sum;     // the next carry is the add's
+    (* keep *) logic carry_other;  // the next carry if not
+    assign take_sum     = en_i && !pre_i;
+    assign carry_other  = en_i ? |(a0_i & b_mag_i) : s_q[W];
+    assign carry_next_o = take_sum ? sum[W] : carry_other;
   end else begin : g_n
     logic       unused_hm;  // no high mask in this mode
     logic [W-1:0] x;
@@ -58,6 +68,7 @@ module dda_axis #(
     assign x         = pre_i ? a0_i : s_q[W-1:0];
     assign y         = pre_i ? {1'b0, b_mag_i} : (s_q[W] ? dc_q : {1'b0, mag_q});
     assign s_d       = {1'b0, x} + y;
+    assign carry_next_o = en_i ? s_d[W] : s_q[W];
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) dc_q <= '0;
       else if (ld_i) dc_q <= b_dc_i;

@@ -129,16 +129,20 @@ module dda_line #(
   logic [ACC_W-1:0]      hm_q;
   logic                  done_q;
   logic [AXES-1:0]       carry;  // this iteration steps the axis
+  logic [AXES-1:0]       carry_next;  // carry on the next clock (the stage decides block a clock ahead)
   logic [AXES-1:0]       moves;  // the running command moves the axis at all
   logic [AXES-1:0]       neg;  // ...in the negative direction
   logic [AXES-1:0]       neg_next;  // neg on the next clock (the stage decides ready a clock ahead)
-  logic [AXES-1:0]       ready;  // the axis may start a pulse on the next clock
+  logic [AXES-1:0]       unused_ready;  // the stall reads block instead
+  logic [AXES-1:0]       block;  // the axis must step and is not ready: stall (a register)
   logic                  tick, stall, advance, last;
 
   // The adders' operands select on pre_load_q, not load, and every next state
   // below is a choice by advance between two values computed from registers:
   // the clock's late signal enters each register at its last gate.
   // pre_load_q == b_valid_q && (!act_q || left_zero_q), kept as a register.
+  // The stall is an OR of registers, one per axis: the stage's block_o,
+  // decided a clock ahead from the next clock's carry (carry_next).
   // The counts' compares are registers too (left_one_q, b_low_zero_q,
   // b_low_one_q), so these next states are small cones of registers: a
   // compare inside one would let the mapper (ABC) put the late advance
@@ -147,7 +151,7 @@ module dda_line #(
   // clock's advance; a command still reaches B a clock before the engine can
   // load it again (2^n >= 1 iterations, and cmd_ready_o lets in one command
   // per two clocks at most).
-  assign stall   = |(carry & ~ready);
+  assign stall   = |block;
   assign advance = tick && !stall && !abort_i;
   assign last    = advance && left_zero_q;
   assign load    = pre_load_q && (!act_q || advance) && !abort_i;
@@ -259,14 +263,15 @@ module dda_line #(
     ) u_acc (
       .clk_i,
       .rst_ni,
-      .pre_i  (pre_load_q),
-      .ld_i   (load),
-      .en_i   (load || advance),
-      .a0_i   (b_a0_q),
-      .b_mag_i(b_mag_q),
-      .b_dc_i ('0),
-      .hm_i   (hm_q),
-      .carry_o(carry[i])
+      .pre_i       (pre_load_q),
+      .ld_i        (load),
+      .en_i        (load || advance),
+      .a0_i        (b_a0_q),
+      .b_mag_i     (b_mag_q),
+      .b_dc_i      ('0),
+      .hm_i        (hm_q),
+      .carry_o     (carry[i]),
+      .carry_next_o(carry_next[i])
     );
 
     // A load brings the next command's; the last iteration or an abort ends it.
@@ -317,11 +322,13 @@ module dda_line #(
     .step_space_i,
     .dir_setup_i,
     .dir_hold_i,
-    .want_valid_i(moves),
-    .want_dir_i  (neg),
-    .want_dir_next_i(neg_next),
-    .fire_i      ({AXES{advance}} & carry),
-    .ready_o     (ready),
+    .want_valid_i    (moves),
+    .want_dir_i      (neg),
+    .want_dir_next_i (neg_next),
+    .want_step_next_i(carry_next),
+    .fire_i          ({AXES{advance}} & carry),
+    .ready_o         (unused_ready),
+    .block_o         (block),
     .step_o,
     .dir_o,
     .pos_o

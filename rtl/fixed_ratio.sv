@@ -206,13 +206,15 @@ module fixed_ratio #(
   logic [AXES-1:0] left;  // the axis still has pulses to send
   logic [AXES-1:0] carry;  // its phase carries on this tick
   logic [AXES-1:0] must;  // it steps on this tick
+  logic [AXES-1:0] must_next;  // must on the next clock (the stage decides block a clock ahead)
   logic [AXES-1:0] major;  // the axis is a major axis of the running command (|delta_i| = M)
   logic [AXES-1:0] two;  // its pulse counter is at 2
   logic [AXES-1:0] buf_le1;  // the buffered command's |delta_i| <= 1
   logic            last_q, last_d;  // the running command's next tick is its last
   logic [AXES-1:0] neg;  // direction of the running command (1: negative)
   logic [AXES-1:0] neg_next;  // neg on the next clock (the stage decides ready a clock ahead)
-  logic [AXES-1:0] ready;  // the axis may start a pulse on the next clock
+  logic [AXES-1:0] unused_ready;  // the stall reads block instead
+  logic [AXES-1:0] block;  // the axis must step and is not ready: stall (a register)
   logic            tick, stall, advance, last;
   logic            take_adv, take_idle;  // the engine loads the buffer if it advances, if not
 
@@ -221,7 +223,9 @@ module fixed_ratio #(
   // from registers (last_q, the counters' compares, buf_ready are registers
   // or small cones of them): the clock's late signal enters each register at
   // its last gate, as in rtl/dda_line.sv. A tick comes only with act_q
-  // (rtl/feed_accum.sv) and never with an abort.
+  // (rtl/feed_accum.sv) and never with an abort. The stall is an OR of
+  // registers, one per axis: the stage's block_o, decided a clock ahead from
+  // the next clock's must (must_next).
   // Completion: every command completes in exactly max(M, 1) ticks, and a
   // major axis (rate 1.0) steps on every one of them, so its pulse counter
   // counts the ticks left; no other axis has a pulse left after tick M
@@ -230,7 +234,7 @@ module fixed_ratio #(
   // tick leaves a major axis's counter at 1. (The HLS core tests every
   // axis's counter instead; the lockstep compares the two.)
   assign must      = carry & left;
-  assign stall     = |(must & ~ready);
+  assign stall     = |block;
   assign advance   = tick && !stall && !abort_i;
   assign last      = advance && last_q;
   assign take_adv  = buf_ready && last_q;
@@ -316,9 +320,7 @@ module fixed_ratio #(
     logic [FRAC_W:0]  rate_q;  // R = ceil(|delta_i| 2^FRAC_W / M)
     logic [FRAC_W:0]  sum_q, sum_d;  // phase + R < 2^(FRAC_W+1); phase = sum_q[FRAC_W-1:0]
     logic [FRAC_W:0]  sum_next;  // the next tick's phase + R
-    /* verilator lint_off UNUSEDSIGNAL */
-    logic [FRAC_W:0]  sum_load;  // one half + R (bit 0: load_bit or sum0_other)
-    /* verilator lint_on UNUSEDSIGNAL */
+    logic [FRAC_W:1]  sum_load;  // one half + R, but bit 0 (load_bit or sum0_other)
     logic [FRAC_W:0]  rate_load;  // R, when the engine loads: quot_d
     logic             load_bit;  // ...in the last divider clock, its bit 0 is this clock's quotient bit
     (* keep *) logic  sum0_other;  // sum_d[0] unless a load takes load_bit (see below)
@@ -374,17 +376,25 @@ module fixed_ratio #(
     assign load_bit  = !diff[ACC_W];
     assign rate_load = div_last_q ? {quot_q[FRAC_W-1:0], load_bit} : quot_q;
     assign sum_load  = {rate_load[FRAC_W] || rate_load[FRAC_W-1],
-                        rate_load[FRAC_W] || !rate_load[FRAC_W-1], rate_load[FRAC_W-2:0]};
+                        rate_load[FRAC_W] || !rate_load[FRAC_W-1], rate_load[FRAC_W-2:1]};
     assign sum0_other = advance ? (take_adv ? quot_q[0] : sum_next[0]) :
                                   (take_idle ? quot_q[0] : sum_q[0]);
     assign use_bit    = div_last_q && (advance ? take_adv : take_idle);
-    assign sum_d      = {advance ? (take_adv ? sum_load[FRAC_W:1] : sum_next[FRAC_W:1]) :
-                                   (take_idle ? sum_load[FRAC_W:1] : sum_q[FRAC_W:1]),
+    // The top bit (the carry, the end of the add's carry chain) chooses in
+    // the last LUT, by the kept nets top_sel and top_other (for the ABC
+    // reason above).
+    (* keep *) logic top_sel, top_other;
+    assign top_sel    = advance && !take_adv;
+    assign top_other  = advance ? sum_load[FRAC_W] : (take_idle ? sum_load[FRAC_W] : sum_q[FRAC_W]);
+    assign sum_d      = {top_sel ? sum_next[FRAC_W] : top_other,
+                         advance ? (take_adv ? sum_load[FRAC_W-1:1] : sum_next[FRAC_W-1:1]) :
+                                   (take_idle ? sum_load[FRAC_W-1:1] : sum_q[FRAC_W-1:1]),
                          use_bit ? load_bit : sum0_other};
     assign cnt_d  = advance ? (take_adv ? buf_mag_q : must[i] ? cnt_q - ACC_W'(1) : cnt_q) :
                               (take_idle ? buf_mag_q : cnt_q);
     assign left_d = advance ? (take_adv ? buf_nz_q : must[i] ? !one_q : left_q) :
                               (take_idle ? buf_nz_q : left_q);
+    assign must_next[i] = sum_d[FRAC_W] && left_d;
     assign one_d  = advance ? (take_adv ? buf_one_q : must[i] ? two[i] : one_q) :
                               (take_idle ? buf_one_q : one_q);
 
@@ -439,11 +449,13 @@ module fixed_ratio #(
     .step_space_i,
     .dir_setup_i,
     .dir_hold_i,
-    .want_valid_i   ({AXES{act_q}} & left),
-    .want_dir_i     (neg),
-    .want_dir_next_i(neg_next),
-    .fire_i         ({AXES{advance}} & must),
-    .ready_o        (ready),
+    .want_valid_i    ({AXES{act_q}} & left),
+    .want_dir_i      (neg),
+    .want_dir_next_i (neg_next),
+    .want_step_next_i(must_next),
+    .fire_i          ({AXES{advance}} & must),
+    .ready_o         (unused_ready),
+    .block_o         (block),
     .step_o,
     .dir_o,
     .pos_o

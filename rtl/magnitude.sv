@@ -3,10 +3,13 @@
 //
 // Built as (x - 1) ^ all ones for a negative x, one adder whose sum bits take
 // the XOR: Yosys maps `x[W-1] ? -x : x` to an adder, an XOR and a mux per bit
-// (93 iCE40 LUT4 at W = 32, against 32 here). The top bit is taken apart,
-// as neg && (the low bits are all zero): computed as the other bits, its LUT
-// would read the sign on two inputs, which nextpnr-ice40 0.4 cannot route
-// when the LUT shares its cell with a carry (its router circles for ever).
+// (93 iCE40 LUT4 at W = 32, against 32 here). The top bit is the adder's
+// own top sum bit, neg ^ (the carry into it), with the sign as the top bit
+// of the first operand: it is set just for x = -2^(W-1), and it stays in the
+// chain's last cell (taken as neg && !carry, it needed one more cell and a
+// route after the chain). Computed as the other bits, its LUT would read the
+// sign on two inputs, which nextpnr-ice40 0.4 cannot route when the LUT
+// shares its cell with a carry (its router circles for ever).
 module magnitude #(
   parameter int W = 32  // width of x and of |x| (>= 2)
 ) (
@@ -14,9 +17,9 @@ module magnitude #(
   output logic [W-1:0] mag_o,  // |x|, unsigned
   output logic         neg_o   // x < 0
 );
-  logic [W-1:0] low;  // x[W-2:0] - neg, the carry out in bit W-1
+  logic [W-1:0] low;  // x[W-2:0] - neg; bit W-1: neg ^ the carry out of the bits below
 
   assign neg_o = x_i[W-1];
-  assign low   = {1'b0, x_i[W-2:0]} + {1'b0, {(W - 1) {neg_o}}};
-  assign mag_o = {neg_o && !low[W-1], low[W-2:0] ^ {(W - 1) {neg_o}}};
+  assign low   = x_i + {1'b0, {(W - 1) {neg_o}}};
+  assign mag_o = {low[W-1], low[W-2:0] ^ {(W - 1) {neg_o}}};
 endmodule

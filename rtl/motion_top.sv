@@ -163,6 +163,8 @@ module motion_top #(
   logic            hold_q;  // feed_i was 0
   logic            done_q;
   logic [AXES-1:0] dda_carry, carry, want_valid, want_dir, ready;
+  logic [AXES-1:0] unused_block;  // the stage's block_o (READY_Q = 1 only)
+  logic [AXES-1:0] unused_carry_next;  // the DDA axes' carry_next_o (for READY_Q = 1 only)
   logic            eng_step_x, eng_step_y, eng_last;
   logic            unused;  // the half bit (no half preload here)
   assign unused = ^a_top;
@@ -319,14 +321,15 @@ module motion_top #(
     ) u_acc (
       .clk_i,
       .rst_ni,
-      .pre_i  (pre_load),
-      .ld_i   (load),
-      .en_i   (load || advance),
-      .a0_i   (b_a0_q),
-      .b_mag_i(b_mag_q),
-      .b_dc_i (b_dc_q),
-      .hm_i   ('0),
-      .carry_o(dda_carry[i])
+      .pre_i       (pre_load),
+      .ld_i        (load),
+      .en_i        (load || advance),
+      .a0_i        (b_a0_q),
+      .b_mag_i     (b_mag_q),
+      .b_dc_i      (b_dc_q),
+      .hm_i        ('0),
+      .carry_o     (dda_carry[i]),
+      .carry_next_o(unused_carry_next[i])  // the stage's READY_Q = 0: no block to predict
     );
 
     assign carry[i]      = dda_carry[i] || (on_x_q[i] && eng_step_x) || (on_y_q[i] && eng_step_y);
@@ -380,11 +383,13 @@ module motion_top #(
     .step_space_i,
     .dir_setup_i,
     .dir_hold_i,
-    .want_valid_i(want_valid),
-    .want_dir_i  (want_dir),
-    .want_dir_next_i(want_dir),  // unused: READY_Q = 0
-    .fire_i      ({AXES{advance}} & carry),
-    .ready_o     (ready),
+    .want_valid_i    (want_valid),
+    .want_dir_i      (want_dir),
+    .want_dir_next_i (want_dir),  // unused: READY_Q = 0
+    .want_step_next_i('0),  // unused: READY_Q = 0
+    .fire_i          ({AXES{advance}} & carry),
+    .ready_o         (ready),
+    .block_o         (unused_block),  // READY_Q = 0: always 0
     .step_o,
     .dir_o,
     .pos_o

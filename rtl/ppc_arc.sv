@@ -86,6 +86,7 @@ module ppc_arc #(
   logic [AXES-1:0] want_valid;  // the running command may step the axis
   logic [AXES-1:0] want_dir;
   logic [AXES-1:0] ready;  // the axis may start a pulse on the next clock
+  logic [AXES-1:0] unused_block;  // the stage's block_o (READY_Q = 1 only)
   logic            tick, stall, advance, last;
 
   assign carry     = {step_y, step_x};
@@ -162,11 +163,13 @@ module ppc_arc #(
     .step_space_i,
     .dir_setup_i,
     .dir_hold_i,
-    .want_valid_i(want_valid),
-    .want_dir_i  (want_dir),
-    .want_dir_next_i(want_dir),  // unused: READY_Q = 0
-    .fire_i      ({AXES{advance}} & carry),
-    .ready_o     (ready),
+    .want_valid_i    (want_valid),
+    .want_dir_i      (want_dir),
+    .want_dir_next_i (want_dir),  // unused: READY_Q = 0
+    .want_step_next_i('0),  // unused: READY_Q = 0
+    .fire_i          ({AXES{advance}} & carry),
+    .ready_o         (ready),
+    .block_o         (unused_block),  // READY_Q = 0: always 0
     .step_o,
     .dir_o,
     .pos_o

@@ -85,6 +85,7 @@ module ppc_line #(
   logic            x_left, y_left, step_x, step_y, line_last;
   logic [AXES-1:0] carry;  // this operation steps the axis
   logic [AXES-1:0] ready;  // the axis may start a pulse on the next clock
+  logic [AXES-1:0] unused_block;  // the stage's block_o (READY_Q = 1 only)
   logic            tick, stall, advance, last;
 
   assign carry    = {act_q && step_y, act_q && step_x};
@@ -167,11 +168,13 @@ module ppc_line #(
     .step_space_i,
     .dir_setup_i,
     .dir_hold_i,
-    .want_valid_i({act_q && y_left, act_q && x_left}),
-    .want_dir_i  (neg_q),
-    .want_dir_next_i(neg_q),  // unused: READY_Q = 0 (measured: READY_Q = 1 costs this core speed)
-    .fire_i      ({AXES{advance}} & carry),
-    .ready_o     (ready),
+    .want_valid_i    ({act_q && y_left, act_q && x_left}),
+    .want_dir_i      (neg_q),
+    .want_dir_next_i (neg_q),  // unused: READY_Q = 0 (measured: READY_Q = 1 costs this core speed)
+    .want_step_next_i('0),  // unused: READY_Q = 0
+    .fire_i          ({AXES{advance}} & carry),
+    .ready_o         (ready),
+    .block_o         (unused_block),  // READY_Q = 0: always 0
     .step_o,
     .dir_o,
     .pos_o

@@ -7,7 +7,10 @@
 // all (want_valid_i) and in which direction (want_dir_i: 1 = negative); the
 // stage answers whether a pulse may start on the next clock (ready_o). The
 // engine fires only ready axes (fire_i; it stalls otherwise), so no step is
-// ever lost and no timing is ever violated. A fired axis raises step_o on the
+// ever lost and no timing is ever violated. With READY_Q = 1 the engine also
+// says a clock ahead which axes it will want to step (want_step_next_i) and
+// the stage answers with block_o, a register per axis: the engine stalls
+// when any is set. A fired axis raises step_o on the
 // next clock and its position counter counts the step on the same clock:
 // pos_o always equals the pulses that reached the wire.
 //
@@ -30,8 +33,10 @@ module step_stage #(
   input  logic [AXES-1:0]       want_valid_i,  // the running command moves the axis
   input  logic [AXES-1:0]       want_dir_i,    // ...in this direction (1: negative)
   input  logic [AXES-1:0]       want_dir_next_i,  // want_dir_i of the next clock (READY_Q = 1)
+  input  logic [AXES-1:0]       want_step_next_i,  // the engine wants a pulse on the next clock (READY_Q = 1)
   input  logic [AXES-1:0]       fire_i,        // start a pulse next clock (ready axes only)
   output logic [AXES-1:0]       ready_o,       // a pulse in direction want_dir_i may start next clock
+  output logic [AXES-1:0]       block_o,       // a pulse wanted now and not ready_o: stall (READY_Q = 1; else 0)
   output logic [AXES-1:0]       step_o,
   output logic [AXES-1:0]       dir_o,         // 1: negative motion
   output logic [AXES*POS_W-1:0] pos_o          // axis i in bits [i*POS_W +: POS_W]
@@ -78,25 +83,27 @@ module step_stage #(
     ) u_stepdir (
       .clk_i,
       .rst_ni,
-      .len_i       (len),
-      .space_i     (space),
-      .setup_i     (setup),
-      .hold_i      (hold),
-      .len_one_i   (len_one),
-      .space_one_i (space_one),
-      .setup_one_i (setup_one),
-      .hold_one_i  (hold_one),
-      .space_two_i (space_two),
-      .setup_two_i (setup_two),
-      .hold_two_i  (hold_two),
-      .fresh_i     (fresh),
-      .want_valid_i(want_valid_i[i]),
-      .want_dir_i  (want_dir_i[i]),
-      .want_dir_next_i(want_dir_next_i[i]),
-      .fire_i      (fire_i[i]),
-      .ready_o     (ready_o[i]),
-      .step_o      (step_o[i]),
-      .dir_o       (dir_o[i])
+      .len_i           (len),
+      .space_i         (space),
+      .setup_i         (setup),
+      .hold_i          (hold),
+      .len_one_i       (len_one),
+      .space_one_i     (space_one),
+      .setup_one_i     (setup_one),
+      .hold_one_i      (hold_one),
+      .space_two_i     (space_two),
+      .setup_two_i     (setup_two),
+      .hold_two_i      (hold_two),
+      .fresh_i         (fresh),
+      .want_valid_i    (want_valid_i[i]),
+      .want_dir_i      (want_dir_i[i]),
+      .want_dir_next_i (want_dir_next_i[i]),
+      .want_step_next_i(want_step_next_i[i]),
+      .fire_i          (fire_i[i]),
+      .ready_o         (ready_o[i]),
+      .block_o         (block_o[i]),
+      .step_o          (step_o[i]),
+      .dir_o           (dir_o[i])
     );
   end
 endmodule

@@ -33,11 +33,14 @@
 // to 1 (no compare against a setting). ready_o is decided a clock ahead too:
 // READY_Q = 0, for either direction (ok_pos_q, ok_neg_q), selected by
 // want_dir_i; READY_Q = 1, as one register for the direction the engine
-// says on want_dir_next_i it will want on the next clock (the same values;
-// the engine's stall then reads registers only). fire_i, the engine's late
-// signal, enters the next state only at its last gate. The settings arrive
-// prepared once for
-// all axes by rtl/stepdir_timing.sv.
+// says on want_dir_next_i it will want on the next clock (the same values).
+// With READY_Q = 1 the stage also says, as a register, whether the engine
+// must stall for this axis (block_o: the engine wants a pulse now, as it said
+// on want_step_next_i a clock ago, and ready_o is low), so the engine's stall
+// is an OR of registers, one per axis, not a tree of wants and readies.
+// fire_i, the engine's late signal, enters the next state only at its last
+// gate. The settings arrive prepared once for all axes by
+// rtl/stepdir_timing.sv.
 module stepdir_axis #(
   parameter int TIM_W   = 16,   // width of the settings and counters (>= 2)
   parameter bit READY_Q = 1'b0  // 1: ready_o a register, from want_dir_next_i
@@ -61,8 +64,10 @@ module stepdir_axis #(
   input  logic             want_valid_i,  // the active command moves this axis...
   input  logic             want_dir_i,    // ...in this direction
   input  logic             want_dir_next_i,  // want_dir_i of the next clock (READY_Q = 1; else unused)
+  input  logic             want_step_next_i,  // the engine wants a pulse on the next clock (READY_Q = 1; else unused)
   input  logic             fire_i,        // start a pulse next clock (only when ready_o)
   output logic             ready_o,
+  output logic             block_o,       // a pulse wanted (want_step_next_i a clock ago) and not ready_o (READY_Q = 1; else 0)
   // The pins
   output logic             step_o,
   output logic             dir_o
@@ -167,17 +172,25 @@ module stepdir_axis #(
   // is the direction wanted.
   if (READY_Q) begin : g_ready_q
     // Decided a clock ahead, for the direction wanted on the next clock.
-    logic ready_q;
+    logic ready_q, ready_d, block_q;
+    assign ready_d = pulse_nf && !fire_i && (want_dir_next_i == dir_d);
     always_ff @(posedge clk_i or negedge rst_ni) begin
-      if (!rst_ni) ready_q <= 1'b0;
-      else ready_q <= pulse_nf && !fire_i && (want_dir_next_i == dir_d);
+      if (!rst_ni) begin
+        ready_q <= 1'b0;
+        block_q <= 1'b0;
+      end else begin
+        ready_q <= ready_d;
+        block_q <= want_step_next_i && !ready_d;
+      end
     end
     assign ready_o = ready_q;
+    assign block_o = block_q;
   end else begin : g_ready_mux
     // Decided a clock ahead for either direction, selected by want_dir_i.
     logic unused_next;  // no prediction in this mode
     logic ok_pos_q, ok_neg_q;  // with dir_o = 0, with dir_o = 1
-    assign unused_next = want_dir_next_i;
+    assign unused_next = want_dir_next_i ^ want_step_next_i;
+    assign block_o     = 1'b0;
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
         ok_pos_q <= 1'b0;

@@ -27,6 +27,7 @@ module step_stage_props #(
   input logic [AXES-1:0]  fire_i
 );
   logic [AXES-1:0]       ready, step, dir;
+  logic [AXES-1:0]       unused_block;
   logic [AXES*POS_W-1:0] pos;
 
   step_stage #(
@@ -42,12 +43,14 @@ module step_stage_props #(
     .dir_hold_i,
     .want_valid_i,
     .want_dir_i,
-    .want_dir_next_i(want_dir_i),  // READY_Q = 0: unused
+    .want_dir_next_i (want_dir_i),  // READY_Q = 0: unused
+    .want_step_next_i('0),  // READY_Q = 0: unused
     .fire_i,
-    .ready_o(ready),
-    .step_o (step),
-    .dir_o  (dir),
-    .pos_o  (pos)
+    .ready_o         (ready),
+    .block_o         (unused_block),  // READY_Q = 0: always 0
+    .step_o          (step),
+    .dir_o           (dir),
+    .pos_o           (pos)
   );
 
   logic [AXES-1:0]       p_step, p_fire;

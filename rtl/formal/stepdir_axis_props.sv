@@ -30,7 +30,11 @@
 // axis (fire_i -> ready_o, as every core's stall logic guarantees); with
 // READY_Q = 1, want_dir_next_i on each clock is want_dir_i of the next (from
 // the second clock after reset on; ready_o is low on the first anyway), so
-// a_ready proves the registered ready_o exact.
+// a_ready proves the registered ready_o exact; likewise want_step_next_i is
+// want_step_i of the next clock, and want_step_i is low on the first clock
+// after reset (no core runs a command then), so a_block proves block_o
+// exact:
+//   a_block   READY_Q = 1: block_o == want_step_i && !ready_o (READY_Q = 0: 0).
 // want_valid_i, want_dir_i, fire_i and the settings are otherwise free every cycle.
 module stepdir_axis_props #(
   parameter int TIM_W   = 4,
@@ -45,9 +49,11 @@ module stepdir_axis_props #(
   input logic             want_valid_i,
   input logic             want_dir_i,
   input logic             want_dir_next_i,
+  input logic             want_step_i,  // the engine wants a pulse now (what want_step_next_i said)
+  input logic             want_step_next_i,
   input logic             fire_i
 );
-  logic ready, step, dir;
+  logic ready, block, step, dir;
   logic [TIM_W-1:0] len, space, setup, hold;
   logic len_one, space_one, setup_one, hold_one, space_two, setup_two, hold_two, fresh;
 
@@ -95,10 +101,12 @@ module stepdir_axis_props #(
     .want_valid_i,
     .want_dir_i,
     .want_dir_next_i,
+    .want_step_next_i,
     .fire_i,
-    .ready_o(ready),
-    .step_o (step),
-    .dir_o  (dir)
+    .ready_o    (ready),
+    .block_o    (block),
+    .step_o     (step),
+    .dir_o      (dir)
   );
 
   // Monitor counters are one bit wider than the settings and saturate, so
@@ -175,11 +183,13 @@ module stepdir_axis_props #(
   logic f_init = 1'b1;
   logic f_first = 1'b0;
   logic p_want_next = 1'b0;  // want_dir_next_i of the previous clock
+  logic p_step_next = 1'b0;  // want_step_next_i of the previous clock
   always_ff @(posedge clk_i) begin
     f_init  <= 1'b0;
     f_first <= f_init;
     p_first <= f_first;
     p_want_next <= want_dir_next_i;
+    p_step_next <= want_step_next_i;
     p_len   <= step_len_i;
     p_space <= step_space_i;
     p_setup <= dir_setup_i;
@@ -191,6 +201,7 @@ module stepdir_axis_props #(
     assume(rst_ni == !f_init);
     if (fire_i) assume(ready);
     if (READY_Q && !f_init && !first) assume(want_dir_i == p_want_next);
+    if (!f_init) assume(want_step_i == (!first && p_step_next));
     if (!f_init) begin
       a_len_high: assert(hi <= c_len);
       a_len_fall: assert(!fall || p_hi == q_len);
@@ -202,6 +213,7 @@ module stepdir_axis_props #(
       a_ready: assert(ready == legal);
       a_turn: assert(!p_turn || turned);
       a_first: assert(!first || !ready);
+      a_block: assert(block == (READY_Q && want_step_i && !ready));
       a_no_turn: assert(!p_first || !turned);
     end
   end
