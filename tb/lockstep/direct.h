@@ -63,6 +63,26 @@ void drive_inputs(const Frame<A>& f, Rtl& rtl, Inputs& in) {
   A::template drive<Cfg>(f.cmd, f.setup, rtl, in.cmd);
 }
 
+// One clock of both DUTs: the frame's inputs, the rising edge (inputs and
+// edge in one eval: with rst_ni low the RTL's asynchronous reset wins, as
+// tick() with rst_n low does), both cores' outputs after it, the falling
+// edge. Out of line on purpose: one copy per core and variant, whatever
+// bench drives it, so the regression's bench and the speed benchmark's
+// replay (tests/bench/bench_lockstep.cpp) run the very same code for the
+// DUTs, and the two differ only by what the bench itself does.
+template <class A, class Cfg, class Rtl, class Core>
+[[gnu::noinline]] void clock_duts(const Frame<A>& f, Rtl& rtl, Core& hls, typename Core::Inputs& in,
+                                  OutPins& hls_out, OutPins& rtl_out) {
+  drive_inputs<A, Cfg>(f, rtl, in);
+  rtl.clk_i = 1;
+  rtl.eval();
+  hls.tick(in);
+  hls_out = read_outputs(hls.outputs());
+  rtl_out = read_outputs<Cfg>(rtl);
+  rtl.clk_i = 0;
+  rtl.eval();
+}
+
 // Runs `bench` to its end in the direct mode. B is Bench<A>, or anything
 // with its next_frame()/observe()/finished() protocol (the lockstep-speed
 // benchmark records the frames through a wrapper).
@@ -81,19 +101,13 @@ void run_direct(B& bench) {
   Rtl rtl(&context);
   Core hls;
   typename Core::Inputs in;
+  OutPins hls_out, rtl_out;
   rtl.clk_i = 0;
   rtl.rst_ni = 0;
   rtl.eval();
   while (!bench.finished()) {
-    drive_inputs<A, Cfg>(bench.next_frame(), rtl, in);
-    // Inputs and the rising edge in one eval: with rst_ni low the RTL's
-    // asynchronous reset wins, as tick() with rst_n low does.
-    rtl.clk_i = 1;
-    rtl.eval();
-    hls.tick(in);
-    bench.observe(read_outputs(hls.outputs()), read_outputs<Cfg>(rtl));
-    rtl.clk_i = 0;
-    rtl.eval();
+    clock_duts<A, Cfg>(bench.next_frame(), rtl, hls, in, hls_out, rtl_out);
+    bench.observe(hls_out, rtl_out);
   }
   rtl.final();
 }
