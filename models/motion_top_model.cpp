@@ -184,6 +184,7 @@ MotionIdeal::MotionIdeal(const LatticePoint& start, const MotionCommand& c, int 
     int moving = 0;
     for (int i = 0; i < axes; ++i) moving += d[static_cast<size_t>(i)] != 0;
     bound_ = dda_error_bound(moving > 0 ? moving : 1, Preload::kZero);
+    line_.emplace(start_, end_);
     return;
   }
   if (c.ops == 0) reject("arc ops = 0");
@@ -215,7 +216,7 @@ double MotionIdeal::slaved_lag(const LatticePoint& p, int axis, uint64_t op) con
 }
 
 double MotionIdeal::error(const LatticePoint& p, uint64_t op) const {
-  if (c_.kind == MotionKind::kLine) return point_line_distance(p, start_, end_);
+  if (c_.kind == MotionKind::kLine) return (*line_)(p);
   const double planar = planar_error(p);
   double sum = planar * planar;
   for (int j = 0; j < axes_; ++j) {

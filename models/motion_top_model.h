@@ -178,6 +178,7 @@ class MotionIdeal {
   LatticePoint start_, end_;
   std::array<int, 2> plane_axes_{};
   std::optional<PpcArcIdeal> ideal_;  // arcs, relative to the start
+  std::optional<LineDistance> line_;  // lines: from start_ to end_
   ErrorBound bound_{0, false};
   mutable LatticePoint plane_point_;  // scratch: no allocation per call
 };

@@ -190,8 +190,8 @@ bool PpcArcStream::next(StepMove& m) {
         }
         continue;
       case kLine: {
-        StepMove lm;
-        if (!line_.next(lm)) {
+        const StepMove& lm = line_move_;
+        if (!line_.next(line_move_)) {
           phase_ = kDone;
           return false;
         }
@@ -305,6 +305,9 @@ double PpcArcIdeal::error(const LatticePoint& p) const {
   const double rp = std::sqrt(static_cast<double>(p2));
   // |p| - rs without cancellation, like dr_.
   const double dp = rp + rs_ > 0 ? static_cast<double>(p2 - rs2_) / (rp + rs_) : 0.0;
+  // An end on the circle (dr = 0, the usual arc): the spiral is the circle,
+  // and the angle (an atan2 per point) would only be multiplied by 0.
+  if (dr_ == 0.0) return std::abs(dp);
   const double phi = angle_from_start(x, y);
   const double t = std::min(phi, theta_) / theta_;
   return std::abs(dp - dr_ * t);

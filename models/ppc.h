@@ -180,6 +180,7 @@ class PpcArcStream {
   bool degenerate_ = false;
   Phase phase_ = kArc;
   PpcLineStream line_;
+  StepMove line_move_;  // the closing line's move (kept: no allocation per move)
   uint64_t op_ = 0;
 };
 

@@ -104,13 +104,11 @@ struct DeltaScPin {
 // and the bound).
 class IdealLine {
  public:
-  IdealLine(const models::LatticePoint& start, const DeltaCommand& c) : start_(start), end_(start) {
-    apply_deltas(c, end_);
-  }
-  // Normal distance of a visited point from the line, in steps.
-  double error(const models::LatticePoint& p) const {
-    return models::point_line_distance(p, start_, end_);
-  }
+  IdealLine(const models::LatticePoint& start, const DeltaCommand& c)
+      : start_(start), end_(end_of(start, c)), distance_(start_, end_) {}
+  // Normal distance of a visited point from the line, in steps
+  // (models::point_line_distance).
+  double error(const models::LatticePoint& p) const { return distance_(p); }
   // The ideal path as a polyline (for plots): the line itself.
   std::vector<std::vector<double>> ideal() const {
     return {{start_.begin(), start_.end()}, {end_.begin(), end_.end()}};
@@ -118,6 +116,13 @@ class IdealLine {
 
  protected:
   models::LatticePoint start_, end_;
+
+ private:
+  static models::LatticePoint end_of(models::LatticePoint p, const DeltaCommand& c) {
+    apply_deltas(c, p);
+    return p;
+  }
+  models::LineDistance distance_;  // from start_ to end_
 };
 
 // The payload of a core whose only own input is cmd_delta_i; A is the

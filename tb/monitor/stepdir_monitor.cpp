@@ -10,14 +10,14 @@ void StepdirMonitor::reset(uint64_t cycle) {
   after_reset_ = true;
 }
 
-void StepdirMonitor::check(uint64_t cycle, const char* rule, uint64_t measured, uint32_t setting,
-                           std::vector<TimingViolation>& kept, uint64_t& count) const {
-  const uint64_t required = setting == 0 ? 1 : setting;
-  if (measured < required) record_capped(kept, count, {cycle, axis_, rule, measured, required});
+void StepdirMonitor::violation(uint64_t cycle, const char* rule, uint64_t measured,
+                               uint64_t required, std::vector<TimingViolation>& kept,
+                               uint64_t& count) const {
+  record_capped(kept, count, {cycle, axis_, rule, measured, required});
 }
 
-void StepdirMonitor::observe(uint64_t cycle, bool step, bool dir, const StepdirTiming& t,
-                             std::vector<TimingViolation>& kept, uint64_t& count) {
+void StepdirMonitor::observe_edge(uint64_t cycle, bool step, bool dir, const StepdirTiming& t,
+                                  std::vector<TimingViolation>& kept, uint64_t& count) {
   const bool rise = step && !step_, fall = !step && step_, dir_change = dir != dir_;
   if (after_reset_) {
     after_reset_ = false;

@@ -23,8 +23,13 @@ class StepdirMonitor {
   // edge. A phase keeps the setting of the edge it starts on
   // (rtl/stepdir_axis.sv): a pulse the step_len of its rise, the space and
   // the hold those of the fall, the setup that of the turn of dir.
+  // Inline for the clocks where nothing happens (most of them): no edge and
+  // no reset to take the settings from leaves the monitor as it is.
   void observe(uint64_t cycle, bool step, bool dir, const StepdirTiming& timing,
-               std::vector<TimingViolation>& kept, uint64_t& count);
+               std::vector<TimingViolation>& kept, uint64_t& count) {
+    if (step != step_ || dir != dir_ || after_reset_)
+      observe_edge(cycle, step, dir, timing, kept, count);
+  }
 
   // rst_ni was low at edge `cycle`: the outputs are idle, and the reset
   // counts as the end of a pulse and a change of dir (rtl/stepdir_axis.sv):
@@ -37,8 +42,16 @@ class StepdirMonitor {
   uint32_t high_len() const { return step_ ? (len_ == 0 ? 1 : len_) : 0; }
 
  private:
+  void observe_edge(uint64_t cycle, bool step, bool dir, const StepdirTiming& timing,
+                    std::vector<TimingViolation>& kept, uint64_t& count);
+  // A phase of `measured` clocks against its setting (0 acts as 1).
   void check(uint64_t cycle, const char* rule, uint64_t measured, uint32_t setting,
-             std::vector<TimingViolation>& kept, uint64_t& count) const;
+             std::vector<TimingViolation>& kept, uint64_t& count) const {
+    const uint64_t required = setting == 0 ? 1 : setting;
+    if (measured < required) violation(cycle, rule, measured, required, kept, count);
+  }
+  void violation(uint64_t cycle, const char* rule, uint64_t measured, uint64_t required,
+                 std::vector<TimingViolation>& kept, uint64_t& count) const;
 
   int axis_;
   bool step_ = false, dir_ = false;

@@ -50,15 +50,16 @@ Adapter::Reference::Reference(const models::LatticePoint& start, const Command& 
       ideal_({c.center[0], c.center[1]}, {0, 0}, {c.end[0], c.end[1]}, c.ccw) {}
 
 bool Adapter::Reference::next(Move& m) {
-  models::StepMove sm;
-  if (!stream_.next(sm)) return false;
-  m.index = static_cast<uint64_t>(sm.time);
-  for (size_t i = 0; i < 2; ++i) m.step[i] = static_cast<int8_t>(sm.step[i]);
+  if (!stream_.next(move_)) return false;
+  m.index = static_cast<uint64_t>(move_.time);
+  for (size_t i = 0; i < 2; ++i) m.step[i] = static_cast<int8_t>(move_.step[i]);
   return true;
 }
 
 double Adapter::Reference::error(const models::LatticePoint& p) const {
-  return ideal_.error({p[0] - start_[0], p[1] - start_[1]});
+  rel_[0] = p[0] - start_[0];
+  rel_[1] = p[1] - start_[1];
+  return ideal_.error(rel_);
 }
 
 uint64_t Adapter::work(const Command& c, const CoreLimits&) {

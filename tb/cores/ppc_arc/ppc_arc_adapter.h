@@ -115,6 +115,10 @@ struct Adapter {
     models::LatticePoint start_;
     models::PpcArcStream stream_;
     models::PpcArcIdeal ideal_;
+    // Scratch, kept so that a move allocates nothing: the stream's move, and
+    // a point relative to the start.
+    models::StepMove move_;
+    mutable models::LatticePoint rel_ = models::LatticePoint(2, 0);
   };
   static void apply(const Command& c, models::LatticePoint& at) {
     at[0] += c.end[0];

@@ -43,10 +43,9 @@ Adapter::Reference::Reference(const models::LatticePoint& start, const Command& 
       bound_{models::ppc_line_error_bound(start_, end_), false} {}
 
 bool Adapter::Reference::next(Move& m) {
-  models::StepMove sm;
-  if (!stream_.next(sm)) return false;
-  m.index = static_cast<uint64_t>(sm.time);
-  for (size_t i = 0; i < 2; ++i) m.step[i] = static_cast<int8_t>(sm.step[i]);
+  if (!stream_.next(move_)) return false;
+  m.index = static_cast<uint64_t>(move_.time);
+  for (size_t i = 0; i < 2; ++i) m.step[i] = static_cast<int8_t>(move_.step[i]);
   return true;
 }
 

@@ -44,6 +44,7 @@ struct Adapter : DeltaPayload<Adapter> {
    private:
     models::PpcLineStream stream_;
     models::ErrorBound bound_;
+    models::StepMove move_;  // scratch, kept: a move allocates nothing
   };
   // |dx| + |dy| operations; a zero-length command takes one.
   static uint64_t work(const Command& c, const CoreLimits&);
