@@ -97,8 +97,11 @@ class Bench {
   }
 
   const Frame<A>& next_frame() {
+    // The payload stays in the frame while the same command is offered
+    // (cmd_loaded_) and is cleared once, when cmd_valid_i falls: the clocks
+    // a command waits copy nothing.
+    const bool was_valid = frame_.cmd_valid;
     frame_.cmd_valid = false;
-    frame_.cmd = typename A::Command{};
     frame_.abort = false;
     frame_.rst_n = phase_ != Phase::kReset;
     if (case_clock_start_ == 0) case_clock_start_ = bench_now();
@@ -107,6 +110,10 @@ class Bench {
         frame_.abort = true;  // the item being offered waits a clock
       else
         drive_items();
+    }
+    if (was_valid && !frame_.cmd_valid) {
+      frame_.cmd = typename A::Command{};
+      cmd_loaded_ = false;
     }
     frame_.feed = settings_.feed;
     frame_.setup = settings_.setup;
@@ -118,8 +125,8 @@ class Bench {
     ++cycle_;
     if (options_.progress_every && cycle_ % options_.progress_every == 0) print_progress();
     const FaultPlan& f = options_.faults;
-    OutPins hls_seen = hls;
-    if (f.flip_hls_step_at == cycle_) hls_seen.step ^= 1;
+    // A planned fault acts on a copy; a clean clock reads the pins in place.
+    const OutPins& hls_seen = f.flip_hls_step_at == cycle_ ? flipped(hls) : hls;
     if (trace_ || frames_) {
       flat_inputs<A>(frame_, limits_, in_values_);
       if (trace_) trace_->record(cycle_, in_values_, hls_seen, rtl);
@@ -128,7 +135,8 @@ class Bench {
 
     CaseResult& r = results_.back();
     r.cycles = cycle_ - case_start_cycle_;
-    if (!compare(hls_seen, rtl)) {
+    if (hls_seen != rtl) {
+      record_mismatch(hls_seen, rtl);
       // The first mismatch ends the run: nothing after it can be trusted.
       r.end_position = scoreboard_->position();
       r.expected_end_position = scoreboard_->expected_end();
@@ -136,9 +144,9 @@ class Bench {
       finished_ = true;
       return;
     }
-    last_rtl_ = rtl;
-    OutPins seen = rtl;
-    if (f.glitch_step_at == cycle_) seen.step ^= 1;
+    last_ready_ = rtl.cmd_ready;
+    last_busy_ = rtl.busy;
+    const OutPins& seen = f.glitch_step_at == cycle_ ? flipped(rtl) : rtl;
 
     if (!frame_.rst_n) {
       for (auto& m : monitors_) m.reset(cycle_);
@@ -234,7 +242,8 @@ class Bench {
     have_streamed_ = false;
     gap_left_ = 0;
     settings_ = c.settings;
-    last_rtl_ = OutPins{};
+    last_ready_ = false;
+    last_busy_ = false;
     abort_open_ = false;
     monitors_.clear();
     for (int i = 0; i < limits_.axes; ++i) monitors_.emplace_back(i);
@@ -276,7 +285,7 @@ class Bench {
           if (--gap_left_ == 0) next_item();
           return;
         case Kind::kDrain:
-          if (last_rtl_.busy) return;
+          if (last_busy_) return;
           next_item();
           continue;
         case Kind::kAbort:
@@ -285,8 +294,11 @@ class Bench {
           return;
         case Kind::kCommand:
           frame_.cmd_valid = true;
-          frame_.cmd = it.cmd;
-          if (last_rtl_.cmd_ready) {
+          if (!cmd_loaded_) {
+            frame_.cmd = it.cmd;
+            cmd_loaded_ = true;
+          }
+          if (last_ready_) {
             // busy_o is the new command's from here: an abort still open
             // stays unmeasured (idle_after_clocks -1).
             abort_open_ = false;
@@ -296,6 +308,7 @@ class Bench {
             A::apply(it.cmd, path_target_);
             path_row("target", path_target_);
             next_item();
+            cmd_loaded_ = false;  // the next offer copies its own command in
           } else {
             ++results_.back().offer_wait_cycles;
           }
@@ -380,9 +393,15 @@ class Bench {
                         std::to_string(a.idle_bound));
   }
 
-  bool compare(const OutPins& hls, const OutPins& rtl) {
-    if (hls == rtl) return true;
-    // Name the first differing signal, in port order.
+  // `p` with step_o[0] flipped (a planned fault), in flip_.
+  const OutPins& flipped(const OutPins& p) {
+    flip_ = p;
+    flip_.step ^= 1;
+    return flip_;
+  }
+
+  // The two DUTs' outputs differ: name the first differing signal, in port order.
+  void record_mismatch(const OutPins& hls, const OutPins& rtl) {
     Mismatch m{cycle_, "", 0, 0};
     auto differs = [&](const std::string& name, uint64_t h, uint64_t r) {
       if (h == r || !m.signal.empty()) return;
@@ -403,7 +422,6 @@ class Bench {
     CaseResult& r = results_.back();
     r.mismatches = 1;
     r.first_mismatch = m;
-    return false;
   }
 
   void print_progress() const {
@@ -461,7 +479,10 @@ class Bench {
   uint64_t gap_left_ = 0;
   RunSettings<A> settings_;
   Frame<A> frame_;
-  OutPins last_rtl_;  // outputs after the last edge: what the driver reacts to
+  bool cmd_loaded_ = false;  // frame_.cmd holds the command item at hand
+  bool last_ready_ = false,
+       last_busy_ = false;  // cmd_ready_o, busy_o after the last edge: what the driver reacts to
+  OutPins flip_;            // a fault's copy of the pins (flipped())
   std::vector<StepdirMonitor> monitors_;
   std::optional<Scoreboard<A>> scoreboard_;
   bool abort_open_ = false;  // an abort whose busy_o has not fallen yet

@@ -24,6 +24,7 @@
 //       on its command's done_o (every move seen).
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <deque>
 #include <optional>
@@ -61,7 +62,8 @@ class Scoreboard {
         case_start_cycle_(case_start_cycle),
         start_(start),
         at_(start),
-        expected_end_(std::move(start)) {}
+        expected_end_(std::move(start)),
+        pos_mask_(limits.pos_w >= 64 ? ~uint64_t{0} : (uint64_t{1} << limits.pos_w) - 1) {}
 
   // A command the core took, in order, with the setup it was taken with.
   void command_taken(const typename A::Command& cmd, const typename A::Setup& setup) {
@@ -78,10 +80,53 @@ class Scoreboard {
   uint64_t current_command() const { return current_; }
 
   // Outputs after one clock edge (not during reset). Returns true when a
-  // move (a rising step edge on some axis) was applied.
+  // move (a rising step edge on some axis) was applied. Most clocks have
+  // neither a move nor done_o: they only compare pos_o, inline.
   bool observe(uint64_t cycle, const OutPins& pins, CaseResult& r) {
     const uint32_t rising = pins.step & ~prev_step_;
     prev_step_ = pins.step;
+    if (rising || pins.done) observe_event(cycle, pins, rising, r);
+    uint64_t pos_diff = 0;
+    for (int i = 0; i < axes_; ++i)
+      pos_diff |= pins.pos[static_cast<size_t>(i)] ^ want_pos_[static_cast<size_t>(i)];
+    if (pos_diff != 0 && !pos_reported_) report_pos(cycle, pins, r);
+    return rising != 0;
+  }
+
+  // The abort edge has been observed: every command taken and not done is
+  // dropped, later commands start where the axes are. Returns whether that
+  // position is on the reference path (every move so far was the model's).
+  bool abort() {
+    const bool on_path = !diverged_;
+    if (taken_count() > done_count_) taken_.resize(static_cast<size_t>(done_count_ - first_));
+    current_ = static_cast<size_t>(taken_count());
+    stream_.reset();
+    expected_end_ = at_;
+    diverged_ = false;  // the findings so far are reported; compare afresh
+    return on_path;
+  }
+
+  // End of the case: everything taken must have completed and arrived.
+  void finish(CaseResult& r) {
+    r.end_position = at_;
+    r.expected_end_position = expected_end_;
+    if (done_count_ != taken_count())
+      error(r, std::to_string(taken_count()) + " commands taken but " +
+                   std::to_string(done_count_) + " done_o pulses");
+    if (at_ != expected_end_)
+      error(r, "ended at " + point_text(at_) + ", expected " + point_text(expected_end_));
+  }
+
+  // Where the step/dir outputs have taken the axes so far, and where the
+  // commands taken so far lead (for a report cut short by a mismatch).
+  const models::LatticePoint& position() const { return at_; }
+  const models::LatticePoint& expected_end() const { return expected_end_; }
+  // Deviation of the last move's point from its command's ideal path.
+  double last_error() const { return last_error_; }
+
+ private:
+  // The moves of the axes in `rising`, then done_o.
+  void observe_event(uint64_t cycle, const OutPins& pins, uint32_t rising, CaseResult& r) {
     if (rising) {
       if (r.first_step_cycle == 0) r.first_step_cycle = cycle - case_start_cycle_;
       Move seen;
@@ -90,6 +135,7 @@ class Scoreboard {
         if (!((rising >> i) & 1)) continue;
         seen.step[a] = ((pins.dir >> i) & 1) ? -1 : 1;
         at_[a] += seen.step[a];
+        want_pos_[a] = static_cast<uint64_t>(at_[a] - start_[a]) & pos_mask_;
         ++r.steps[a];
       }
       if (!diverged_) {
@@ -139,54 +185,22 @@ class Scoreboard {
       ++done_count_;
       forget_done();
     }
-    // pos_o holds the position relative to reset, POS_W bits.
-    const uint64_t mask = limits_.pos_w >= 64 ? ~uint64_t{0} : (uint64_t{1} << limits_.pos_w) - 1;
+  }
+
+  // pos_o must hold the position relative to reset, POS_W bits (want_pos_,
+  // kept with at_); it does not: one report per case, for the first axis off.
+  void report_pos(uint64_t cycle, const OutPins& pins, CaseResult& r) {
     for (int i = 0; i < axes_; ++i) {
       const size_t a = static_cast<size_t>(i);
-      const uint64_t want = static_cast<uint64_t>(at_[a] - start_[a]) & mask;
-      if (pins.pos[a] != want && !pos_reported_) {
-        pos_reported_ = true;
-        error(r, "cycle " + std::to_string(cycle) + ": pos_o[" + std::to_string(i) +
-                     "] = " + std::to_string(pins.pos[a]) +
-                     " but the steps on step_o/dir_o add up to " + std::to_string(want));
-        break;
-      }
+      if (pins.pos[a] == want_pos_[a]) continue;
+      pos_reported_ = true;
+      error(r, "cycle " + std::to_string(cycle) + ": pos_o[" + std::to_string(i) +
+                   "] = " + std::to_string(pins.pos[a]) +
+                   " but the steps on step_o/dir_o add up to " + std::to_string(want_pos_[a]));
+      return;
     }
-    return rising != 0;
   }
 
-  // The abort edge has been observed: every command taken and not done is
-  // dropped, later commands start where the axes are. Returns whether that
-  // position is on the reference path (every move so far was the model's).
-  bool abort() {
-    const bool on_path = !diverged_;
-    if (taken_count() > done_count_) taken_.resize(static_cast<size_t>(done_count_ - first_));
-    current_ = static_cast<size_t>(taken_count());
-    stream_.reset();
-    expected_end_ = at_;
-    diverged_ = false;  // the findings so far are reported; compare afresh
-    return on_path;
-  }
-
-  // End of the case: everything taken must have completed and arrived.
-  void finish(CaseResult& r) {
-    r.end_position = at_;
-    r.expected_end_position = expected_end_;
-    if (done_count_ != taken_count())
-      error(r, std::to_string(taken_count()) + " commands taken but " +
-                   std::to_string(done_count_) + " done_o pulses");
-    if (at_ != expected_end_)
-      error(r, "ended at " + point_text(at_) + ", expected " + point_text(expected_end_));
-  }
-
-  // Where the step/dir outputs have taken the axes so far, and where the
-  // commands taken so far lead (for a report cut short by a mismatch).
-  const models::LatticePoint& position() const { return at_; }
-  const models::LatticePoint& expected_end() const { return expected_end_; }
-  // Deviation of the last move's point from its command's ideal path.
-  double last_error() const { return last_error_; }
-
- private:
   struct Command {
     typename A::Command cmd;
     typename A::Setup setup;
@@ -279,6 +293,8 @@ class Scoreboard {
   std::vector<std::string> failures_;  // of the reference's own checks, reported at once
   bool diverged_ = false;      // after a wrong move the rest of the sequence is not compared
   bool pos_reported_ = false;  // one pos_o report per case, not one per cycle
+  uint64_t pos_mask_;          // POS_W bits
+  std::array<uint64_t, kMaxAxes> want_pos_{};  // what pos_o must read: at_ - start_, POS_W bits
 };
 
 }  // namespace hwinterp::tb
