@@ -190,17 +190,16 @@ bool PpcArcStream::next(StepMove& m) {
         }
         continue;
       case kLine: {
-        const StepMove& lm = line_move_;
         if (!line_.next(line_move_)) {
           phase_ = kDone;
           return false;
         }
         ++op_;
         m.time = static_cast<double>(op_);
-        m.step = lm.step;
-        m.point = lm.point;
-        x_ = lm.point[0] - c_[0];
-        y_ = lm.point[1] - c_[1];
+        m.step = line_move_.step;
+        m.point = line_move_.point;
+        x_ = line_move_.point[0] - c_[0];
+        y_ = line_move_.point[1] - c_[1];
         return true;
       }
       case kArc:

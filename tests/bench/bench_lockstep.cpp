@@ -107,7 +107,6 @@ struct ReplayBench {
   }
 };
 
-template <class V>
 void report(benchmark::State& state, uint64_t clocks) {
   state.counters["clocks_per_s"] =
       benchmark::Counter(static_cast<double>(clocks), benchmark::Counter::kIsRate);
@@ -156,7 +155,7 @@ void BM_Replay(benchmark::State& state) {
   frames<V>();  // recorded before the timing starts
   uint64_t clocks = 0;
   for (auto _ : state) clocks += replay<V, R>();
-  report<V>(state, clocks);
+  report(state, clocks);
 }
 
 // CPU time of this thread, in seconds: time the shared machine gives to
