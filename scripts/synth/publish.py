@@ -14,8 +14,12 @@ Usage: publish.py [--check] [--variants FILE] [SYNTH_JSON...]
                 today's rtl/<core>.f files (rtl_sha256), or if a variant is missing
 
 Without --check (and after merging), README.md's text between the two
-`synth-table` marker lines is rewritten from docs/synth.json: no figure in
-that table is written by hand.
+`synth-table` marker lines is rewritten from docs/synth.json, and so is each
+`synth-columns` block (a marker naming variants, e.g.
+`<!-- synth-columns: fixed_ratio_n2 dda_line_n2; written by ... -->`, up to
+`<!-- end synth-columns -->`: a small table with one column per named
+variant, for prose that compares cores): no synthesis figure in README.md is
+written by hand.
 
 Exit status: 0 done / consistent, 1 inconsistent (names each variant), 2 bad input.
 """
@@ -31,6 +35,9 @@ PUBLISHED = os.path.join(ROOT, "docs", "synth.json")
 README = os.path.join(ROOT, "README.md")
 BEGIN = "<!-- synth-table: written by scripts/synth/publish.py from docs/synth.json; do not edit -->"
 END = "<!-- end synth-table -->"
+# <!-- synth-columns: V1 V2 ...; written by scripts/synth/publish.py from docs/synth.json; do not edit -->
+COLUMNS_RE = re.compile(r"<!-- synth-columns: ([\w ]+); written by scripts/synth/publish.py from "
+                        r"docs/synth.json; do not edit -->\n.*?<!-- end synth-columns -->", re.S)
 # The cores the issue-12 target (100 MHz on HX8K at every seed) is set for; log_stepper's own
 # aim is 40 MHz (issue 9).
 TARGET_MHZ = {"log_stepper": 40.0}
@@ -129,6 +136,32 @@ def render(results):
     return "\n".join(out)
 
 
+def render_columns(names, by_name):
+    """A synth-columns block: area and Fmax of the named variants, one column each."""
+    missing = [v for v in names if v not in by_name]
+    if missing:
+        fail("README.md's synth-columns block names unpublished variants: %s" % ", ".join(missing))
+    rs = [by_name[v] for v in names]
+    out = ["<!-- synth-columns: %s; written by scripts/synth/publish.py from docs/synth.json; "
+           "do not edit -->" % " ".join(names), "",
+           "| | %s |" % " | ".join("`%s`" % v for v in names),
+           "|---|" + "---|" * len(names),
+           "| iCE40 core LUT4 / carry / FF | %s |" % " | ".join(
+               "%d / %d / %d" % (r["ice40_core"]["lut4"], r["ice40_core"]["carry"],
+                                 r["ice40_core"]["ff"]) for r in rs),
+           "| HX8K Fmax, seeds %s (MHz) | %s |" % (
+               "/".join(str(p["seed"]) for p in rs[0]["harness"]["hx8k"]), " | ".join(
+                   " / ".join("%.2f" % p["fmax_mhz"] if "fmax_mhz" in p else "no route"
+                              for p in r["harness"]["hx8k"]) for r in rs)),
+           "", "<!-- end synth-columns -->"]
+    return "\n".join(out)
+
+
+def with_columns(text, by_name):
+    """text with every synth-columns block rendered again from docs/synth.json."""
+    return COLUMNS_RE.sub(lambda m: render_columns(m.group(1).split(), by_name), text)
+
+
 def readme_parts():
     with open(README) as f:
         text = f.read()
@@ -199,10 +232,14 @@ def main(argv):
                                                               now[:12]))
     head, section, tail = readme_parts()
     table = render(results) if results else BEGIN + "\n" + END
+    by_variant = {r["variant"]: r for r in results}
     if check:
         if section != table:
             problems.append("README.md's synthesis table is not what docs/synth.json renders: "
                             "run scripts/synth/publish.py")
+        if head + tail != with_columns(head, by_variant) + with_columns(tail, by_variant):
+            problems.append("a synth-columns block of README.md is not what docs/synth.json "
+                            "renders: run scripts/synth/publish.py")
         for p in problems:
             sys.stderr.write("publish: %s\n" % p)
         return 1 if problems else 0
@@ -211,7 +248,7 @@ def main(argv):
             json.dump({"variants": results}, f, indent=2)
             f.write("\n")
     with open(README, "w") as f:
-        f.write(head + table + tail)
+        f.write(with_columns(head, by_variant) + table + with_columns(tail, by_variant))
     for p in problems:
         sys.stderr.write("publish: warning: %s\n" % p)
     sys.stdout.write("publish: %d variants in docs/synth.json, README table written\n" % len(results))
