@@ -149,19 +149,10 @@ class Bench {
     const OutPins& seen = f.glitch_step_at == cycle_ ? flipped(rtl) : rtl;
 
     if (!frame_.rst_n) {
-      for (auto& m : monitors_) m.reset(cycle_);
-      monitors_at_ = {0, 0, true};
+      monitors_.reset(cycle_);
     } else {
-      // The monitors act only on an edge of some axis's step or dir, or on
-      // the first clock after a reset: most clocks skip the loop.
-      if (((seen.step ^ monitors_at_.step) | (seen.dir ^ monitors_at_.dir)) != 0 ||
-          monitors_at_.after_reset) {
-        for (int i = 0; i < limits_.axes; ++i)
-          monitors_[static_cast<size_t>(i)].observe(cycle_, (seen.step >> i) & 1,
-                                                    (seen.dir >> i) & 1, frame_.timing,
-                                                    r.timing_violations, r.timing_violation_count);
-        monitors_at_ = {seen.step, seen.dir, false};
-      }
+      monitors_.observe(cycle_, seen.step, seen.dir, frame_.timing, r.timing_violations,
+                        r.timing_violation_count);
       const uint64_t done_before = scoreboard_->done_count();
       const bool moved = scoreboard_->observe(cycle_, seen, r);
       if (moved) {
@@ -252,9 +243,7 @@ class Bench {
     last_ready_ = false;
     last_busy_ = false;
     abort_open_ = false;
-    monitors_.clear();
-    for (int i = 0; i < limits_.axes; ++i) monitors_.emplace_back(i);
-    monitors_at_ = {};
+    monitors_ = StepdirMonitors(limits_.axes);
     scoreboard_.emplace(limits_, c.start, case_start_cycle_);
     case_clock_start_ = 0;  // set by the case's first frame
     path_target_ = c.start;
@@ -374,8 +363,8 @@ class Bench {
     a.on_reference_path = scoreboard_->abort();
     // A pulse already high keeps the length it started with.
     a.idle_bound = std::max<uint32_t>(frame_.timing.step_len, 1) - 1;
-    for (const auto& m : monitors_)
-      a.idle_bound = std::max<uint64_t>(a.idle_bound, std::max<uint32_t>(m.high_len(), 1) - 1);
+    a.idle_bound =
+        std::max<uint64_t>(a.idle_bound, std::max<uint32_t>(monitors_.high_len(), 1) - 1);
     if (!a.on_reference_path)
       record_capped(r.scoreboard_errors, r.scoreboard_error_count,
                     "abort at cycle " + std::to_string(cycle_) + ": position " +
@@ -491,13 +480,7 @@ class Bench {
   bool last_ready_ = false,
        last_busy_ = false;  // cmd_ready_o, busy_o after the last edge: what the driver reacts to
   OutPins flip_;            // a fault's copy of the pins (flipped())
-  std::vector<StepdirMonitor> monitors_;
-  // The step and dir pins the monitors last saw (bit i: axis i), and whether
-  // a reset came after that: the monitors' state, for skipping them.
-  struct MonitorsAt {
-    uint32_t step = 0, dir = 0;
-    bool after_reset = false;
-  } monitors_at_;
+  StepdirMonitors monitors_{0};
   std::optional<Scoreboard<A>> scoreboard_;
   bool abort_open_ = false;  // an abort whose busy_o has not fallen yet
   uint64_t abort_cycle_ = 0;

@@ -1,5 +1,7 @@
 #include "tb/monitor/stepdir_monitor.h"
 
+#include <algorithm>
+
 namespace hwinterp::tb {
 
 void StepdirMonitor::reset(uint64_t cycle) {
@@ -48,6 +50,33 @@ void StepdirMonitor::observe_edge(uint64_t cycle, bool step, bool dir, const Ste
   if (dir_change) dir_change_ = cycle, have_dir_change_ = true, setup_ = t.dir_setup;
   step_ = step;
   dir_ = dir;
+}
+
+StepdirMonitors::StepdirMonitors(int axes) {
+  axes_.reserve(static_cast<size_t>(axes));
+  for (int i = 0; i < axes; ++i) axes_.emplace_back(i);
+}
+
+void StepdirMonitors::observe_edges(uint64_t cycle, uint32_t step, uint32_t dir,
+                                    const StepdirTiming& timing, std::vector<TimingViolation>& kept,
+                                    uint64_t& count) {
+  for (size_t i = 0; i < axes_.size(); ++i)
+    axes_[i].observe(cycle, (step >> i) & 1, (dir >> i) & 1, timing, kept, count);
+  step_ = step;
+  dir_ = dir;
+  after_reset_ = false;
+}
+
+void StepdirMonitors::reset(uint64_t cycle) {
+  for (auto& m : axes_) m.reset(cycle);
+  step_ = dir_ = 0;
+  after_reset_ = true;
+}
+
+uint32_t StepdirMonitors::high_len() const {
+  uint32_t len = 0;
+  for (const auto& m : axes_) len = std::max(len, m.high_len());
+  return len;
 }
 
 }  // namespace hwinterp::tb

@@ -63,4 +63,33 @@ class StepdirMonitor {
   bool after_reset_ = false;  // the next edge is the first after a reset
 };
 
+// The monitors of every axis of a core, fed the core's step_o and dir_o words
+// (bit i: axis i). A clock on which no axis's step or dir changed, and that
+// is not the first after a reset, leaves every monitor as it is: it costs
+// one inline compare of the two words, not a call per axis.
+class StepdirMonitors {
+ public:
+  explicit StepdirMonitors(int axes);
+
+  // The outputs after clock edge `cycle` (StepdirMonitor::observe per axis).
+  void observe(uint64_t cycle, uint32_t step, uint32_t dir, const StepdirTiming& timing,
+               std::vector<TimingViolation>& kept, uint64_t& count) {
+    if (((step ^ step_) | (dir ^ dir_)) != 0 || after_reset_)
+      observe_edges(cycle, step, dir, timing, kept, count);
+  }
+  // rst_ni was low at edge `cycle` (StepdirMonitor::reset per axis).
+  void reset(uint64_t cycle);
+  // The longest step_len a pulse now high started with (0 acts as 1); 0 when
+  // no step is high.
+  uint32_t high_len() const;
+
+ private:
+  void observe_edges(uint64_t cycle, uint32_t step, uint32_t dir, const StepdirTiming& timing,
+                     std::vector<TimingViolation>& kept, uint64_t& count);
+
+  std::vector<StepdirMonitor> axes_;
+  uint32_t step_ = 0, dir_ = 0;  // the words the monitors last saw
+  bool after_reset_ = false;     // a reset came after them
+};
+
 }  // namespace hwinterp::tb

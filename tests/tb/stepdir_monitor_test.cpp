@@ -81,5 +81,31 @@ TEST(StepdirMonitor, FirstPulseAfterResetKeepsSetupFromTheReset) {
   }
 }
 
+// The set of every axis's monitors, fed the step/dir words: a violation is
+// found on the axis it happens on, and the first clock after a reset gives
+// the settings even when no pin changes on it (the set skips only clocks
+// with no edge that are not the first after a reset).
+TEST(StepdirMonitors, ChecksEveryAxisAndTakesTheSettingsAfterReset) {
+  StepdirMonitors ms(3);
+  Findings f;
+  ms.reset(10);
+  // Clock 11: no edge, setup 5 (the reset's setup phase keeps it); later
+  // clocks setup 1. Axis 2 rises at 14 (4 clocks after the reset: short),
+  // axis 0 at 15 (enough), each for one clock.
+  for (uint64_t c = 11; c <= 17; ++c) {
+    const StepdirTiming t{1, 1, c == 11 ? 5u : 1u, 1};
+    const uint32_t step = (c == 14 ? 4u : 0u) | (c == 15 ? 1u : 0u);
+    ms.observe(c, step, 0, t, f.kept, f.count);
+  }
+  ASSERT_EQ(f.count, 1u);
+  EXPECT_EQ(f.kept[0].axis, 2);
+  EXPECT_EQ(f.kept[0].rule, "dir_setup");
+  EXPECT_EQ(f.kept[0].measured, 4u);
+  EXPECT_EQ(f.kept[0].required, 5u);
+  EXPECT_EQ(ms.high_len(), 0u);
+  ms.observe(18, 2, 0, StepdirTiming{7, 1, 1, 1}, f.kept, f.count);  // axis 1 rises
+  EXPECT_EQ(ms.high_len(), 7u);
+}
+
 }  // namespace
 }  // namespace hwinterp::tb
