@@ -11,6 +11,7 @@
 # Output: table on stdout, <build>/reports/bench_gcode/bench_gcode.json.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+py=${HWINTERP_VENV:-$root/.venv}/bin/python3  # scripts/setup.sh makes it
 build=${HWINTERP_BUILD_DIR:-$root/build}
 moves=100000 do_build=1
 while [ $# -gt 0 ]; do
@@ -27,7 +28,7 @@ done
 [ "$do_build" = 1 ] && "$root/scripts/build.sh"
 out=$build/reports/bench_gcode
 mkdir -p "$out"
-exec python3 - "$build/tb/hwinterp" "$out" "$moves" <<'PY'
+exec "$py" - "$build/tb/hwinterp" "$out" "$moves" <<'PY'
 import json, os, subprocess, sys, time
 
 hw, out, moves = sys.argv[1], sys.argv[2], int(sys.argv[3])

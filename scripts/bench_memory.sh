@@ -9,6 +9,7 @@
 # Output: table on stdout, <build>/reports/bench_memory/bench_memory.json.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+py=${HWINTERP_VENV:-$root/.venv}/bin/python3  # scripts/setup.sh makes it
 build=${HWINTERP_BUILD_DIR:-$root/build}
 clocks=100000000 do_build=1
 while [ $# -gt 0 ]; do
@@ -21,7 +22,7 @@ done
 [ "$do_build" = 1 ] && "$root/scripts/build.sh"
 out=$build/reports/bench_memory
 mkdir -p "$out"
-exec python3 - "$build/tb/hwinterp" "$out" "$clocks" <<'PY'
+exec "$py" - "$build/tb/hwinterp" "$out" "$clocks" <<'PY'
 import json, os, resource, subprocess, sys, time
 
 hw, out, target = sys.argv[1], sys.argv[2], int(sys.argv[3])

@@ -12,6 +12,7 @@
 # Output: table on stdout; logs and bench_speed.json in <build>/reports/bench_speed/.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+py=${HWINTERP_VENV:-$root/.venv}/bin/python3  # scripts/setup.sh makes it
 build=${HWINTERP_BUILD_DIR:-$root/build}
 commands=100 seed=1 repeat=3 do_build=1
 while [ $# -gt 0 ]; do
@@ -27,7 +28,7 @@ done
 hw=$build/tb/hwinterp
 out=$build/reports/bench_speed
 mkdir -p "$out"
-for tool in iverilog vvp /usr/bin/python3; do
+for tool in iverilog vvp "$py"; do
   command -v "$tool" >/dev/null || { echo "bench_speed.sh: $tool not found (scripts/setup.sh installs it)" >&2; exit 2; }
 done
 
@@ -57,7 +58,7 @@ t_compile=$(best_of icarus_compile iverilog -g2012 -o "$out/replay.vvp" -s repla
   "$out/frames.hex.sv" "${rtl[@]}")
 t_icarus=$(best_of icarus vvp -n "$out/replay.vvp" +frames="$out/frames.hex")
 
-/usr/bin/python3 - "$out" "$t_direct" "$t_systemc" "$t_icarus" "$t_compile" <<'PY'
+"$py" - "$out" "$t_direct" "$t_systemc" "$t_icarus" "$t_compile" <<'PY'
 import json, sys
 out, t_direct, t_systemc, t_icarus, t_compile = sys.argv[1], *map(float, sys.argv[2:])
 ref = json.load(open(f"{out}/reference.json"))

@@ -20,6 +20,7 @@
 # is missing; a failing BMC leaves a counterexample trace (.vcd) in DIR.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+py=${HWINTERP_VENV:-$root/.venv}/bin/python3  # scripts/setup.sh makes it
 build=${HWINTERP_BUILD_DIR:-$root/build}
 
 die() { echo "formal: $*" >&2; exit 1; }
@@ -45,7 +46,7 @@ for w in "${width_list[@]}"; do
 done
 
 "$root/scripts/setup.sh"
-for t in yosys yosys-smtbmc z3 python3; do
+for t in yosys yosys-smtbmc z3 "$py"; do
   command -v "$t" >/dev/null || die "$t not found (scripts/setup.sh installs it)"
 done
 
@@ -60,7 +61,7 @@ blocks=(stepdir_axis step_stage)
 
 # Yosys 0.23 silently misreads some SystemVerilog literals; a proof about the
 # misread design would prove nothing about the RTL.
-python3 "$root/scripts/synth/yosys_compat.py" "$root/rtl/stepdir_timing.sv" "$root/rtl/stepdir_axis.sv" "$root/rtl/step_stage.sv" \
+"$py" "$root/scripts/synth/yosys_compat.py" "$root/rtl/stepdir_timing.sv" "$root/rtl/stepdir_axis.sv" "$root/rtl/step_stage.sv" \
   "$root"/rtl/formal/*_props.sv 2>"$out/compat_check.log" ||
   die "Yosys 0.23 would misread the RTL; see $out/compat_check.log"
 

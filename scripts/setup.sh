@@ -1,13 +1,18 @@
 #!/usr/bin/env bash
-# Installs the Debian packages hwinterp builds and runs with. Idempotent: it
-# prints nothing and touches nothing when every package is already there.
+# Installs what hwinterp builds and runs with: the Debian packages (apt, as
+# root or through sudo) and the pinned Python tool chain
+# (scripts/requirements.txt) in a virtual environment inside the project,
+# .venv/ (git-ignored; HWINTERP_VENV moves it). Idempotent: it prints nothing
+# and touches nothing when everything is there. Scripts, tests and hwinterp
+# call .venv/bin/python3, never the python3 on PATH (which may be pyenv's).
 set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
 
 packages=(
   g++ cmake ninja-build pkg-config
   libsystemc-dev verilator libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev
   yosys nextpnr-ice40 fpga-icestorm fpga-icestorm-chipdb iverilog gtkwave
-  python3 python3-matplotlib z3 nlohmann-json3-dev
+  python3 python3-venv z3 nlohmann-json3-dev
   clang libclang-rt-14-dev parallel
 )
 
@@ -17,11 +22,25 @@ for p in "${packages[@]}"; do
     missing+=("$p")
   fi
 done
-[ ${#missing[@]} -eq 0 ] && exit 0
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}" >&2
+  sudo_cmd=()
+  if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
+  export DEBIAN_FRONTEND=noninteractive
+  "${sudo_cmd[@]}" apt-get update -qq
+  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
 
-echo "setup: installing ${missing[*]}" >&2
-sudo_cmd=()
-if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
-export DEBIAN_FRONTEND=noninteractive
-"${sudo_cmd[@]}" apt-get update -qq
-"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+# The Python environment: (re)made when the requirements file changed since
+# it was installed (a stamp holds the file's hash).
+venv=${HWINTERP_VENV:-$root/.venv}
+requirements=$root/scripts/requirements.txt
+stamp=$venv/.requirements.sha256
+want=$(sha256sum "$requirements" | cut -d' ' -f1)
+if [ ! -x "$venv/bin/python3" ] || [ "$(cat "$stamp" 2>/dev/null)" != "$want" ]; then
+  echo "setup: installing the Python tool chain (scripts/requirements.txt) into $venv" >&2
+  /usr/bin/python3 -m venv "$venv"
+  "$venv/bin/python3" -m pip install -q --disable-pip-version-check --no-input \
+    -r "$requirements" >&2
+  echo "$want" >"$stamp"
+fi

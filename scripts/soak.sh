@@ -12,6 +12,7 @@
 # the merged per-core reports <build>/reports/soak_<core>.json.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+py=${HWINTERP_VENV:-$root/.venv}/bin/python3  # scripts/setup.sh makes it
 clocks=1000000000 seed=2026 jobs=$(nproc) cores=()
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -30,7 +31,7 @@ mkdir -p "$reports"
 calibration=300
 "$build/tb/hwinterp" regress "${cores[@]}" --random $calibration --seed "$seed" --modes direct --progress 0 \
   --json "$reports/soak_calibration.json" >/dev/null
-mapfile -t plan < <(python3 - "$reports/soak_calibration.json" "$clocks" "$calibration" <<'PY'
+mapfile -t plan < <("$py" - "$reports/soak_calibration.json" "$clocks" "$calibration" <<'PY'
 import json, math, sys
 report, target, n = json.load(open(sys.argv[1])), int(sys.argv[2]), int(sys.argv[3])
 for core, s in report["cores"].items():
@@ -49,7 +50,7 @@ for line in "${plan[@]}"; do
     --random "$commands" --seed "$seed" >"$reports/soak_$core.log" 2>&1 || status=1
 done
 t1=$(date +%s)
-python3 - "$reports" "$clocks" "$((t1 - t0))" "${plan[@]}" <<'PY'
+"$py" - "$reports" "$clocks" "$((t1 - t0))" "${plan[@]}" <<'PY'
 import json, sys
 reports, target, seconds, plan = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), sys.argv[4:]
 out = {"target_clocks_per_core": target, "seconds": seconds, "cores": {}}

@@ -43,6 +43,7 @@
 # and intermediate files stay in <out>/<variant>/. Honours HWINTERP_BUILD_DIR.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+py=${HWINTERP_VENV:-$root/.venv}/bin/python3  # scripts/setup.sh makes it
 build=${HWINTERP_BUILD_DIR:-$root/build}
 
 die() { echo "synth: $*" >&2; exit 1; }
@@ -86,7 +87,7 @@ done
 "$root/scripts/setup.sh"
 
 # Fail early and by name rather than halfway through a variant.
-need=(yosys python3)
+need=(yosys "$py")
 [ $generic_only -eq 1 ] || need+=(nextpnr-ice40)
 [ "$check" -eq 0 ] || need+=(verilator)
 for t in "${need[@]}"; do
@@ -175,7 +176,7 @@ prepare_core() {
   [ ${#files[@]} -gt 0 ] || die "rtl/$core.f lists no file"
   for f in "${files[@]}"; do [ -f "$f" ] || die "RTL file $f (rtl/$core.f) not found"; done
   mkdir -p "$srcdir"
-  python3 "$root/scripts/synth/yosys_compat.py" "${files[@]}" 2>"$srcdir/compat_check.log" ||
+  "$py" "$root/scripts/synth/yosys_compat.py" "${files[@]}" 2>"$srcdir/compat_check.log" ||
     die "the $core RTL has constructs Yosys 0.23 misreads; see $srcdir/compat_check.log:
 $(cat "$srcdir/compat_check.log")"
   yosys -q -l "$srcdir/read.log" -p "read_verilog -sv ${files[*]}" >/dev/null 2>&1 ||
@@ -224,7 +225,7 @@ for variant in "${variants[@]}"; do
       rename -top $core;
       write_json $vdir/ports.json"
     run_step make_harness "$vdir/make_harness.log" sh -c \
-      'python3 "$1" "$2" "$3" $4 >"$5"' _ "$root/scripts/synth/make_harness.py" "$vdir/ports.json" \
+      '"$1" "$2" "$3" "$4" $5 >"$6"' _ "$py" "$root/scripts/synth/make_harness.py" "$vdir/ports.json" \
       "$core" "$params_kv" "$vdir/${core}_harness.sv"
     run_step ice40_harness "$vdir/ice40_harness.log" yosys -p "$read_rtl $vdir/${core}_harness.sv;
       synth_ice40 -top ${core}_harness -json $vdir/harness.json;
@@ -287,6 +288,6 @@ for variant in "${variants[@]}"; do
   fi
 done
 
-python3 "$root/scripts/synth/synth_report.py" "$out" "${variants[@]}" ||
+"$py" "$root/scripts/synth/synth_report.py" "$out" "${variants[@]}" ||
   die "step 'report' failed (scripts/synth/synth_report.py)"
 echo "synth: done in $(($(date +%s) - t_start)) s; $out/synth.md, $out/synth.json" >&2

@@ -9,6 +9,7 @@
 # Usage: scripts/slurm/test_local.sh [--shards N] [regress args]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
+py=${HWINTERP_VENV:-$root/.venv}/bin/python3  # scripts/setup.sh makes it
 build=${HWINTERP_BUILD_DIR:-$root/build}
 hw=$build/tb/hwinterp
 shards=2
@@ -92,7 +93,7 @@ t1=$(date +%s.%N)
 jobs_run=$(grep -c . < <(ls "$tmp/out"/shard_*.json))
 "$hw" regress "${args[@]}" --progress 0 --json "$tmp/unsharded.json" >"$tmp/unsharded.log" 2>&1 ||
   { echo "test_local.sh: the unsharded run failed; see $tmp/unsharded.log" >&2; exit 1; }
-python3 - "$tmp/out/regress.json" "$tmp/unsharded.json" <<'PY'
+"$py" - "$tmp/out/regress.json" "$tmp/unsharded.json" <<'PY'
 import json, sys
 def strip(j):
     if isinstance(j, dict):

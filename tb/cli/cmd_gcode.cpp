@@ -442,7 +442,7 @@ int run_gcode(int argc, char** argv, int first) {
   if (points_csv) {
     points_csv->close();
     if (!*points_csv) throw UsageError("--plot: error writing '" + points_path + "'");
-    const std::string cmd = "/usr/bin/python3 '" HWINTERP_SCRIPTS_DIR "/plot_gcode.py' '" +
+    const std::string cmd = "'" HWINTERP_PYTHON "' '" HWINTERP_SCRIPTS_DIR "/plot_gcode.py' '" +
                             points_path + "' -o '" + args.str("plot") + "' --title '" + program +
                             "' > /dev/null";
     if (std::system(cmd.c_str()) != 0) {
