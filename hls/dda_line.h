@@ -14,6 +14,7 @@
 #include "hls/dda_axis.h"
 #include "hls/dda_norm.h"
 #include "hls/feed_accum.h"
+#include "hls/fields.h"
 #include "hls/pin_types.h"
 #include "hls/step_stage.h"
 #include "hls/stepper_io.h"
@@ -41,18 +42,13 @@ class DdaLine {
   struct Own {
     acc_t delta[AXES] = {};
     bool half_preload = false;
+    static auto fields() {  // hls/fields.h
+      return std::make_tuple(HWINTERP_FIELD(cmd_delta_i, &Own::delta, kSigned),
+                             HWINTERP_FIELD(half_preload_i, &Own::half_preload, kUnsigned));
+    }
   };
   using Inputs = StepperInputs<Own, FEED_W, TIM_W>;
   using Outputs = StepperOutputs<AXES, POS_W>;
-
-  // The own ports of the SC_MODULE face (hls/stepper_module.h).
-  struct OwnPorts : DeltaPort<AXES, ACC_W> {
-    sc_core::sc_in<bool> half_preload_i{"half_preload_i"};
-    void read(Own& own) const {
-      DeltaPort<AXES, ACC_W>::read(own);
-      own.half_preload = half_preload_i.read();
-    }
-  };
 
   DdaLine() { reset(); }
 

@@ -14,6 +14,7 @@
 #include <systemc>
 
 #include "hls/feed_accum.h"
+#include "hls/fields.h"
 #include "hls/pin_types.h"
 #include "hls/step_stage.h"
 #include "hls/stepper_io.h"
@@ -55,12 +56,12 @@ class FixedRatio {
   // The core's own input: cmd_delta_i (two's complement, one per axis).
   struct Own {
     mag_t delta[AXES] = {};
+    static auto fields() {  // hls/fields.h
+      return std::make_tuple(HWINTERP_FIELD(cmd_delta_i, &Own::delta, kSigned));
+    }
   };
   using Inputs = StepperInputs<Own, FEED_W, TIM_W>;
   using Outputs = StepperOutputs<AXES, POS_W>;
-
-  // The own ports of the SC_MODULE face (hls/stepper_module.h).
-  using OwnPorts = DeltaPort<AXES, ACC_W>;
 
   FixedRatio() { reset(); }
 

@@ -14,6 +14,7 @@
 #include <systemc>
 
 #include "hls/dda_line.h"
+#include "hls/fields.h"
 #include "hls/pin_types.h"
 #include "hls/stepper_io.h"
 
@@ -144,24 +145,16 @@ class LogStepper {
   struct Own {
     word_t b = 0, ab = 0, dl = 0, x_end = 0;
     word_t k[4] = {};
+    static auto fields() {  // hls/fields.h
+      return std::make_tuple(HWINTERP_FIELD(cmd_b_i, &Own::b, kUnsigned),
+                             HWINTERP_FIELD(cmd_ab_i, &Own::ab, kUnsigned),
+                             HWINTERP_FIELD(cmd_dl_i, &Own::dl, kUnsigned),
+                             HWINTERP_FIELD(cmd_x_end_i, &Own::x_end, kUnsigned),
+                             HWINTERP_FIELD(cmd_k_i, &Own::k, kUnsigned));
+    }
   };
   using Inputs = StepperInputs<Own, FEED_W, TIM_W>;
   using Outputs = StepperOutputs<AXES, POS_W>;
-
-  // The own ports of the SC_MODULE face (hls/stepper_module.h).
-  struct OwnPorts {
-    sc_core::sc_in<pin_t<W>> cmd_b_i{"cmd_b_i"}, cmd_ab_i{"cmd_ab_i"}, cmd_dl_i{"cmd_dl_i"},
-        cmd_x_end_i{"cmd_x_end_i"};
-    sc_core::sc_in<pin_t<4 * W>> cmd_k_i{"cmd_k_i"};
-    void read(Own& own) const {
-      own.b = cmd_b_i.read();
-      own.ab = cmd_ab_i.read();
-      own.dl = cmd_dl_i.read();
-      own.x_end = cmd_x_end_i.read();
-      const pin_t<4 * W>& k = cmd_k_i.read();
-      for (int i = 0; i < 4; ++i) own.k[i] = pin_field<4 * W>(k, i * W, W);
-    }
-  };
 
   LogStepper() { reset(); }
 

@@ -16,6 +16,7 @@
 #include "hls/dda_axis.h"
 #include "hls/dda_norm.h"
 #include "hls/feed_accum.h"
+#include "hls/fields.h"
 #include "hls/pin_types.h"
 #include "hls/ppc_arc_engine.h"
 #include "hls/step_stage.h"
@@ -53,34 +54,19 @@ class MotionTop {
     bool ccw = false;
     sc_dt::sc_uint<OPS_W> ops = 0;
     feed_t feed = 0;
+    static auto fields() {  // hls/fields.h
+      return std::make_tuple(HWINTERP_FIELD(cmd_arc_i, &Own::arc, kUnsigned),
+                             HWINTERP_FIELD(cmd_delta_i, &Own::delta, kSigned),
+                             HWINTERP_FIELD(cmd_plane_i, &Own::plane, kUnsigned),
+                             HWINTERP_FIELD(cmd_center_i, &Own::center, kSigned),
+                             HWINTERP_FIELD(cmd_end_i, &Own::end, kSigned),
+                             HWINTERP_FIELD(cmd_ccw_i, &Own::ccw, kUnsigned),
+                             HWINTERP_FIELD(cmd_ops_i, &Own::ops, kUnsigned),
+                             HWINTERP_FIELD(cmd_feed_i, &Own::feed, kUnsigned));
+    }
   };
   using Inputs = StepperInputs<Own, FEED_W, TIM_W>;
   using Outputs = StepperOutputs<AXES, POS_W>;
-
-  // The own ports of the SC_MODULE face (hls/stepper_module.h).
-  struct OwnPorts : DeltaPort<AXES, ACC_W> {
-    sc_core::sc_in<bool> cmd_arc_i{"cmd_arc_i"};
-    sc_core::sc_in<pin_t<2>> cmd_plane_i{"cmd_plane_i"};
-    sc_core::sc_in<pin_t<2 * COORD_W>> cmd_center_i{"cmd_center_i"};
-    sc_core::sc_in<pin_t<2 * COORD_W>> cmd_end_i{"cmd_end_i"};
-    sc_core::sc_in<bool> cmd_ccw_i{"cmd_ccw_i"};
-    sc_core::sc_in<pin_t<OPS_W>> cmd_ops_i{"cmd_ops_i"};
-    sc_core::sc_in<pin_t<FEED_W + 1>> cmd_feed_i{"cmd_feed_i"};
-    void read(Own& own) const {
-      DeltaPort<AXES, ACC_W>::read(own);
-      own.arc = cmd_arc_i.read();
-      own.plane = cmd_plane_i.read();
-      const pin_t<2 * COORD_W>& c = cmd_center_i.read();
-      const pin_t<2 * COORD_W>& e = cmd_end_i.read();
-      for (int i = 0; i < 2; ++i) {
-        own.center[i] = pin_field<2 * COORD_W>(c, i * COORD_W, COORD_W);
-        own.end[i] = pin_field<2 * COORD_W>(e, i * COORD_W, COORD_W);
-      }
-      own.ccw = cmd_ccw_i.read();
-      own.ops = cmd_ops_i.read();
-      own.feed = cmd_feed_i.read();
-    }
-  };
 
   MotionTop() { reset(); }
 

@@ -63,17 +63,4 @@ void set_pin_field(pin_t<W>& v, int lsb, int width, uint64_t value) {
   }
 }
 
-// cmd_delta_i of the delta-command cores (dda_line, ppc_line, fixed_ratio),
-// an own port of their SC_MODULE face: AXES two's complement ACC_W-bit deltas,
-// axis i at [i*ACC_W +: ACC_W], read into Own::delta.
-template <int AXES, int ACC_W>
-struct DeltaPort {
-  sc_core::sc_in<pin_t<AXES * ACC_W>> cmd_delta_i{"cmd_delta_i"};
-  template <class Own>
-  void read(Own& own) const {
-    const pin_t<AXES* ACC_W>& delta = cmd_delta_i.read();
-    for (int i = 0; i < AXES; ++i) own.delta[i] = pin_field<AXES * ACC_W>(delta, i * ACC_W, ACC_W);
-  }
-};
-
 }  // namespace hwinterp::hls

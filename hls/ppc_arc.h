@@ -13,6 +13,7 @@
 #include <systemc>
 
 #include "hls/feed_accum.h"
+#include "hls/fields.h"
 #include "hls/pin_types.h"
 #include "hls/ppc_arc_engine.h"
 #include "hls/step_stage.h"
@@ -40,25 +41,14 @@ class PpcArc {
     coord_t center[AXES] = {};
     coord_t end[AXES] = {};
     bool ccw = false;
+    static auto fields() {  // hls/fields.h
+      return std::make_tuple(HWINTERP_FIELD(cmd_center_i, &Own::center, kSigned),
+                             HWINTERP_FIELD(cmd_end_i, &Own::end, kSigned),
+                             HWINTERP_FIELD(cmd_ccw_i, &Own::ccw, kUnsigned));
+    }
   };
   using Inputs = StepperInputs<Own, FEED_W, TIM_W>;
   using Outputs = StepperOutputs<AXES, POS_W>;
-
-  // The own ports of the SC_MODULE face (hls/stepper_module.h).
-  struct OwnPorts {
-    sc_core::sc_in<pin_t<AXES * COORD_W>> cmd_center_i{"cmd_center_i"};
-    sc_core::sc_in<pin_t<AXES * COORD_W>> cmd_end_i{"cmd_end_i"};
-    sc_core::sc_in<bool> cmd_ccw_i{"cmd_ccw_i"};
-    void read(Own& own) const {
-      const pin_t<AXES* COORD_W>& c = cmd_center_i.read();
-      const pin_t<AXES* COORD_W>& e = cmd_end_i.read();
-      for (int i = 0; i < AXES; ++i) {
-        own.center[i] = pin_field<AXES * COORD_W>(c, i * COORD_W, COORD_W);
-        own.end[i] = pin_field<AXES * COORD_W>(e, i * COORD_W, COORD_W);
-      }
-      own.ccw = cmd_ccw_i.read();
-    }
-  };
 
   PpcArc() { reset(); }
 

@@ -12,6 +12,7 @@
 #include <systemc>
 
 #include "hls/feed_accum.h"
+#include "hls/fields.h"
 #include "hls/pin_types.h"
 #include "hls/ppc_line_step.h"
 #include "hls/step_stage.h"
@@ -38,12 +39,12 @@ class PpcLine {
   // The core's own input: cmd_delta_i (two's complement dx, dy).
   struct Own {
     acc_t delta[AXES] = {};
+    static auto fields() {  // hls/fields.h
+      return std::make_tuple(HWINTERP_FIELD(cmd_delta_i, &Own::delta, kSigned));
+    }
   };
   using Inputs = StepperInputs<Own, FEED_W, TIM_W>;
   using Outputs = StepperOutputs<AXES, POS_W>;
-
-  // The own ports of the SC_MODULE face (hls/stepper_module.h).
-  using OwnPorts = DeltaPort<AXES, ACC_W>;
 
   PpcLine() { reset(); }
 

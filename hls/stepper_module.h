@@ -5,17 +5,17 @@
 //
 // A core provides (see hls/dda_line.h):
 //   Core::Cfg                 its variant configuration (cores.cmake)
+//   Core::Own                 its payload, with its field list (hls/fields.h)
 //   Core::Inputs/Outputs      StepperInputs<Own, ...> / StepperOutputs<...>
-//   Core::OwnPorts            a plain struct holding the core's own sc_in
-//                             ports (named as in the RTL) with
-//                             `void read(Own&) const`
 //   tick(const Inputs&), outputs()
-// Ports declared in OwnPorts become ports of this module: OwnPorts is a base
-// constructed while the module is being elaborated.
+// The payload's own ports (FieldPorts<Own>, one per field, named as in the
+// RTL) become ports of this module: FieldPorts is a base constructed while
+// the module is being elaborated.
 #pragma once
 
 #include <systemc>
 
+#include "hls/fields.h"
 #include "hls/pin_types.h"
 #include "hls/stepper_io.h"
 
@@ -74,7 +74,7 @@ struct StepperPorts : sc_core::sc_module {
 };
 
 template <class Core>
-struct StepperModule : StepperPorts<typename Core::Cfg>, Core::OwnPorts {
+struct StepperModule : StepperPorts<typename Core::Cfg>, FieldPorts<typename Core::Own> {
   SC_HAS_PROCESS(StepperModule);
 
   explicit StepperModule(sc_core::sc_module_name name) : StepperPorts<typename Core::Cfg>(name) {
@@ -89,7 +89,7 @@ struct StepperModule : StepperPorts<typename Core::Cfg>, Core::OwnPorts {
   void on_edge() {
     typename Core::Inputs in;
     this->read_shared(in);
-    Core::OwnPorts::read(in.cmd);
+    FieldPorts<typename Core::Own>::read(in.cmd);
     core_.tick(in);
     this->write_shared(core_.outputs());
   }

@@ -85,8 +85,4 @@ ErrorBound dda_error_bound(int axes, Preload preload) {
   return {std::sqrt(static_cast<double>(axes - 1)), true};
 }
 
-bool within_bound(double error, ErrorBound bound) {
-  return bound.strict ? error < bound.value + 1e-12 : error <= bound.value + 1e-12;
-}
-
 }  // namespace hwinterp::models

@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "models/error_bound.h"
 #include "models/lattice_path.h"
 
 namespace hwinterp::models {
@@ -67,14 +68,6 @@ std::vector<DdaMove> dda_line_moves(const LatticePoint& start, const std::vector
                                     Preload preload);
 
 // The documented bound on the normal path error for a core with `axes` axes.
-// `strict` tells whether the bound is strict (<) or attained (<=).
-struct ErrorBound {
-  double value;
-  bool strict;
-};
 ErrorBound dda_error_bound(int axes, Preload preload);
-
-// True when `error` satisfies `bound` (with 1e-12 slack for rounding).
-bool within_bound(double error, ErrorBound bound);
 
 }  // namespace hwinterp::models

@@ -60,7 +60,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "models/dda_line_model.h"
+#include "models/error_bound.h"
 #include "models/lattice_path.h"
 
 namespace hwinterp::models {

@@ -20,7 +20,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "models/dda_line_model.h"
+#include "models/error_bound.h"
 #include "models/step_path.h"
 
 namespace hwinterp::models {

@@ -7,8 +7,8 @@
 #include <stdexcept>
 
 #include "models/log_curve.h"
+#include "tb/base/text_table.h"
 #include "tb/cli/subcommand.h"
-#include "tb/cli/text_table.h"
 
 namespace hwinterp::cli {
 namespace {

@@ -13,8 +13,8 @@
 #include "models/nishioka.h"
 #include "models/optimal_linear.h"
 #include "models/polyline_verifier.h"
+#include "tb/base/text_table.h"
 #include "tb/cli/subcommand.h"
-#include "tb/cli/text_table.h"
 
 namespace hwinterp::cli {
 namespace {

@@ -9,9 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "tb/cli/cli_args.h"
+#include "tb/base/args.h"
+#include "tb/base/concat.h"
+#include "tb/base/json.h"
 #include "tb/lockstep/bench_options.h"
-#include "tb/report/json.h"
 #include "tb/report/output_path.h"
 
 namespace hwinterp::cli {
@@ -57,8 +58,6 @@ void write_text_file(const std::string& path, const std::string& text, const std
 
 }  // namespace hwinterp::cli
 
-#define HWINTERP_CONCAT_INNER(a, b) a##b
-#define HWINTERP_CONCAT(a, b) HWINTERP_CONCAT_INNER(a, b)
 #define HWINTERP_SUBCOMMAND(...)                                        \
   static const ::hwinterp::cli::SubcommandRegistration HWINTERP_CONCAT( \
       hwinterp_subcommand_, __LINE__)(::hwinterp::cli::Subcommand{__VA_ARGS__})

@@ -1,7 +1,9 @@
 // The command payload of the cores whose command is one signed delta per axis
 // on cmd_delta_i (ACC_W bits an axis, axis i at [i*ACC_W +: ACC_W]): dda_line,
-// ppc_line, fixed_ratio. Written once: its pins in both lockstep modes, how a
-// command moves the position, its validation and its job directives.
+// ppc_line, fixed_ratio. Written once: its conversion to the HLS payload (the
+// pins of both lockstep modes follow from the payload's field list,
+// hls/fields.h), how a command moves the position, its validation and its
+// job directives.
 //
 // DeltaPayload<A> is the whole payload of a core with no other command input
 // (ppc_line, fixed_ratio): the adapter A derives from it and adds its
@@ -12,14 +14,12 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <string>
 #include <vector>
 
-#include "hls/pin_types.h"
 #include "models/lattice_path.h"
-#include "tb/cli/cli_args.h"
-#include "tb/lockstep/pins.h"
-#include "tb/lockstep/rtl_pins.h"
+#include "tb/base/args.h"
 #include "tb/stimulus/delta_commands.h"
 #include "tb/stimulus/rng.h"
 
@@ -58,45 +58,13 @@ inline void apply_deltas(const DeltaCommand& c, models::LatticePoint& at) {
   for (size_t i = 0; i < at.size(); ++i) at[i] += c.delta[i];
 }
 
-// cmd_delta_i as the harness describes it (frames, replay benches, harnesses).
-inline PortSpec delta_port(const CoreLimits& l) {
-  return {"cmd_delta_i", l.axes, l.param("ACC_W")};
+// The deltas into the HLS payload's delta field (cmd_delta_i: Own::delta,
+// one element per axis).
+template <class Own>
+void deltas_to_own(const DeltaCommand& c, Own& own) {
+  for (size_t i = 0; i < std::size(own.delta); ++i)
+    own.delta[i] = static_cast<uint64_t>(c.delta[i]);
 }
-
-// The deltas as port values, one per axis; returns the count written.
-inline size_t delta_values(const DeltaCommand& c, const CoreLimits& l, uint64_t* out) {
-  for (int i = 0; i < l.axes; ++i) out[i] = static_cast<uint64_t>(c.delta[static_cast<size_t>(i)]);
-  return static_cast<size_t>(l.axes);
-}
-
-// Direct mode: the deltas onto the Verilated --cc model and the HLS core's
-// own inputs (Own::delta).
-template <class Cfg, class Rtl, class Own>
-void drive_deltas(const DeltaCommand& c, Rtl& rtl, Own& own) {
-  for (int i = 0; i < Cfg::AXES; ++i) {
-    const uint64_t d = static_cast<uint64_t>(c.delta[static_cast<size_t>(i)]);
-    put_bits(rtl.cmd_delta_i, i * Cfg::ACC_W, Cfg::ACC_W, d);
-    own.delta[i] = d;
-  }
-}
-
-// SystemC mode: the cmd_delta_i signal, bound to both DUTs.
-template <class Cfg>
-struct DeltaScPin {
-  sc_core::sc_signal<hls::pin_t<Cfg::AXES * Cfg::ACC_W>> delta{"cmd_delta"};
-  hls::pin_t<Cfg::AXES* Cfg::ACC_W> value = 0;  // kept: building a wide pin value allocates
-  template <class Dut>
-  void bind(Dut& d) {
-    d.cmd_delta_i(delta);
-  }
-  void write(const DeltaCommand& c) {
-    for (int i = 0; i < Cfg::AXES; ++i)
-      hls::set_pin_field<Cfg::AXES * Cfg::ACC_W>(
-          value, i * Cfg::ACC_W, Cfg::ACC_W,
-          static_cast<uint64_t>(c.delta[static_cast<size_t>(i)]));
-    delta.write(value);
-  }
-};
 
 // The ideal path of a delta command, the line from its start to start +
 // delta: the deviation metric and the plot polyline of every line core's
@@ -132,23 +100,16 @@ struct DeltaPayload {
   using Command = DeltaCommand;
   struct Setup {};
 
-  static std::vector<PortSpec> own_ports(const CoreLimits& l) { return {delta_port(l)}; }
-  static size_t own_values(const Command& c, const Setup&, const CoreLimits& l, uint64_t* out) {
-    return delta_values(c, l, out);
+  // The payload (tb/lockstep/payload_pins.h): cmd_delta_i.
+  template <class Own>
+  static void to_own(const Command& c, const Setup&, Own& own) {
+    deltas_to_own(c, own);
   }
-  template <class Cfg, class Rtl, class Own>
-  static void drive(const Command& c, const Setup&, Rtl& rtl, Own& own) {
-    drive_deltas<Cfg>(c, rtl, own);
-  }
-  template <class Cfg>
-  struct ScPins : DeltaScPin<Cfg> {
-    void write(const Command& c, const Setup&) { DeltaScPin<Cfg>::write(c); }
-  };
 
   static void apply(const Command& c, models::LatticePoint& at) { apply_deltas(c, at); }
   // Deltas fit ACC_W (validate_case() checks the end point against POS_W; a
   // line stays in its box).
-  static void validate(const Command& c, const models::LatticePoint&, const CoreLimits& l,
+  static void validate(const Command& c, const models::LatticePoint&, const VariantSpec& l,
                        const std::string& where) {
     validate_deltas<A>(c, l, where);
   }

@@ -2,7 +2,7 @@
 
 #include <utility>
 
-#include "tb/cli/cli_args.h"
+#include "tb/base/args.h"
 
 namespace hwinterp::gcode {
 

@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "tb/cli/cli_args.h"
+#include "tb/base/args.h"
 #include "tb/gcode/line_source.h"
 
 namespace hwinterp::gcode {

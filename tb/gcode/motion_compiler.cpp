@@ -6,7 +6,7 @@
 #include <optional>
 #include <sstream>
 
-#include "tb/cli/cli_args.h"
+#include "tb/base/args.h"
 #include "tb/gcode/helix.h"
 
 namespace hwinterp::gcode {

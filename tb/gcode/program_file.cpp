@@ -2,7 +2,7 @@
 
 #include <fstream>
 
-#include "tb/cli/cli_args.h"
+#include "tb/base/args.h"
 #include "tb/gcode/canon_reader.h"
 #include "tb/gcode/ngc_reader.h"
 

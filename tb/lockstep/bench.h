@@ -23,10 +23,12 @@
 #include <string>
 #include <vector>
 
+#include "tb/base/case_result.h"
+#include "tb/base/out_pins.h"
 #include "tb/lockstep/bench_options.h"
-#include "tb/lockstep/pins.h"
+#include "tb/lockstep/frame.h"
+#include "tb/lockstep/payload_pins.h"
 #include "tb/monitor/stepdir_monitor.h"
-#include "tb/report/cosim_result.h"
 #include "tb/report/frames.h"
 #include "tb/report/trace.h"
 #include "tb/scoreboard/scoreboard.h"
@@ -35,10 +37,9 @@
 namespace hwinterp::tb {
 
 // The input ports in frame order: the shared contract around the core's own.
-template <class A>
-std::vector<PortSpec> input_ports(const CoreLimits& l) {
+inline std::vector<PortSpec> input_ports(const VariantSpec& l) {
   std::vector<PortSpec> p = {{"rst_ni", 1, 1}, {"cmd_valid_i", 1, 1}};
-  for (auto& own : A::own_ports(l)) p.push_back(std::move(own));
+  for (const auto& own : l.own_ports) p.push_back(own);
   p.push_back({"feed_i", 1, l.feed_w + 1});
   for (const char* t : {"step_len_i", "step_space_i", "dir_setup_i", "dir_hold_i"})
     p.push_back({t, 1, l.tim_w});
@@ -46,13 +47,14 @@ std::vector<PortSpec> input_ports(const CoreLimits& l) {
   return p;
 }
 
-// One value per input element of `f`, in input_ports() order.
+// One value per input element of `f`, in input_ports() order; `flatten`
+// gives the payload's.
 template <class A>
-void flat_inputs(const Frame<A>& f, const CoreLimits& l, uint64_t* out) {
+void flat_inputs(const Frame<A>& f, FlattenPayload<A> flatten, uint64_t* out) {
   size_t k = 0;
   out[k++] = f.rst_n;
   out[k++] = f.cmd_valid;
-  k += A::own_values(f.cmd, f.setup, l, out + k);
+  k += flatten(f.cmd(), f.setup(), out + k);
   out[k++] = f.feed;
   out[k++] = f.timing.step_len;
   out[k++] = f.timing.step_space;
@@ -71,11 +73,17 @@ class Bench {
   using Kind = typename Item<A>::Kind;
 
   // Opens every output file (throws std::runtime_error naming it): a bad
-  // path costs no simulation.
-  Bench(CoreLimits limits, std::vector<Case<A>> cases, BenchOptions options)
-      : limits_(std::move(limits)), cases_(std::move(cases)), options_(std::move(options)) {
+  // path costs no simulation. `flatten` is flatten_payload<A, Cfg> of the
+  // variant (tb/lockstep/payload_pins.h): the payload's pin values for
+  // traces, frame dumps and mismatch reports.
+  Bench(VariantSpec limits, std::vector<Case<A>> cases, BenchOptions options,
+        FlattenPayload<A> flatten)
+      : limits_(std::move(limits)),
+        cases_(std::move(cases)),
+        options_(std::move(options)),
+        flatten_(flatten) {
     if (!options_.trace_path.empty() || !options_.frames_path.empty()) {
-      const std::vector<PortSpec> ports = input_ports<A>(limits_);
+      const std::vector<PortSpec> ports = input_ports(limits_);
       if (!options_.trace_path.empty())
         trace_ = std::make_unique<Trace>(options_.trace_path, ports, limits_.axes, limits_.pos_w,
                                          options_.trace_window);
@@ -112,11 +120,14 @@ class Bench {
         drive_items();
     }
     if (was_valid && !frame_.cmd_valid) {
-      frame_.cmd = typename A::Command{};
+      frame_.set_cmd(typename A::Command{});
       cmd_loaded_ = false;
     }
     frame_.feed = settings_.feed;
-    frame_.setup = settings_.setup;
+    if (setup_changed_) {
+      frame_.set_setup(settings_.setup);
+      setup_changed_ = false;
+    }
     frame_.timing = settings_.timing;
     return frame_;
   }
@@ -128,7 +139,7 @@ class Bench {
     // A planned fault acts on a copy; a clean clock reads the pins in place.
     const OutPins& hls_seen = f.flip_hls_step_at == cycle_ ? flipped(hls) : hls;
     if (trace_ || frames_) {
-      flat_inputs<A>(frame_, limits_, in_values_);
+      flat_inputs<A>(frame_, flatten_, in_values_);
       if (trace_) trace_->record(cycle_, in_values_, hls_seen, rtl);
       if (frames_) frames_->write(in_values_);
     }
@@ -197,7 +208,7 @@ class Bench {
   // Results of the cases that ran (a mismatch stops the run).
   const std::vector<CaseResult>& results() const { return results_; }
   uint64_t cycles() const { return cycle_; }
-  const CoreLimits& limits() const { return limits_; }
+  const VariantSpec& limits() const { return limits_; }
   size_t case_count() const { return cases_.size(); }
   // Closes the trace (FST conversion), the frame file and the path CSV;
   // throws std::runtime_error on failure.
@@ -240,6 +251,7 @@ class Bench {
     have_streamed_ = false;
     gap_left_ = 0;
     settings_ = c.settings;
+    setup_changed_ = true;
     last_ready_ = false;
     last_busy_ = false;
     abort_open_ = false;
@@ -275,6 +287,7 @@ class Bench {
       switch (it.kind) {
         case Kind::kSettings:
           settings_ = it.settings;
+          setup_changed_ = true;
           next_item();
           continue;
         case Kind::kGap:
@@ -292,7 +305,7 @@ class Bench {
         case Kind::kCommand:
           frame_.cmd_valid = true;
           if (!cmd_loaded_) {
-            frame_.cmd = it.cmd;
+            frame_.set_cmd(it.cmd);
             cmd_loaded_ = true;
           }
           if (last_ready_) {
@@ -416,6 +429,15 @@ class Bench {
               rtl.pos[static_cast<size_t>(i)]);
     differs("busy_o", hls.busy, rtl.busy);
     differs("done_o", hls.done, rtl.done);
+    // The inputs the two took at that edge, by port.
+    uint64_t in[Trace::kMaxInputs] = {};
+    flat_inputs<A>(frame_, flatten_, in);
+    size_t k = 0;
+    for (const PortSpec& p : input_ports(limits_)) {
+      Json values = Json::array();
+      for (int i = 0; i < p.count; ++i) values.push_back(p.value(in[k++]));
+      m.inputs[p.name] = p.count == 1 ? values[0] : values;
+    }
     CaseResult& r = results_.back();
     r.mismatches = 1;
     r.first_mismatch = m;
@@ -450,9 +472,10 @@ class Bench {
     for (const auto& p : ref.ideal()) path_row("ideal", p);
   }
 
-  CoreLimits limits_;
+  VariantSpec limits_;
   std::vector<Case<A>> cases_;
   BenchOptions options_;
+  FlattenPayload<A> flatten_;
   std::vector<CaseResult> results_;
   std::unique_ptr<Trace> trace_;
   std::unique_ptr<FrameWriter> frames_;
@@ -475,8 +498,9 @@ class Bench {
   bool have_streamed_ = false;  // ...and not yet done
   uint64_t gap_left_ = 0;
   RunSettings<A> settings_;
+  bool setup_changed_ = false;  // settings_.setup is not yet in frame_
   Frame<A> frame_;
-  bool cmd_loaded_ = false;  // frame_.cmd holds the command item at hand
+  bool cmd_loaded_ = false;  // frame_.cmd() holds the command item at hand
   bool last_ready_ = false,
        last_busy_ = false;  // cmd_ready_o, busy_o after the last edge: what the driver reacts to
   OutPins flip_;            // a fault's copy of the pins (flipped())

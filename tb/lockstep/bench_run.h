@@ -7,22 +7,30 @@
 
 #include <memory>
 #include <stdexcept>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
+#include "hwinterp_core_adapters.h"
 #include "tb/lockstep/direct.h"
+#include "tb/lockstep/payload_pins.h"
 #include "tb/lockstep/registry.h"
 #include "tb/lockstep/systemc.h"
 #include "tb/stimulus/stimulus.h"
 
 namespace hwinterp::tb {
 
+template <class T>
+struct type_tag {
+  using type = T;
+};
+
 template <class A, class Cfg>
 class BenchRunOf final : public BenchRun {
  public:
-  BenchRunOf(CoreLimits limits, std::vector<Case<A>> cases, const BenchOptions& options)
-      : bench_(std::move(limits), std::move(cases), options) {}
-  const CoreLimits& limits() const override { return bench_.limits(); }
+  BenchRunOf(VariantSpec limits, std::vector<Case<A>> cases, const BenchOptions& options)
+      : bench_(std::move(limits), std::move(cases), options, &flatten_payload<A, Cfg>) {}
+  const VariantSpec& limits() const override { return bench_.limits(); }
   size_t case_count() const override { return bench_.case_count(); }
   void run_direct() override { tb::run_direct<A, Cfg>(bench_); }
   std::unique_ptr<sc_core::sc_module> systemc_module(ScRunControl& control) override {
@@ -40,7 +48,7 @@ class BenchRunOf final : public BenchRun {
 
 // A run of validated cases; an output file that cannot be written is bad input.
 template <class A, class Cfg>
-std::unique_ptr<BenchRun> make_run(const CoreLimits& l, std::vector<Case<A>> cases,
+std::unique_ptr<BenchRun> make_run(const VariantSpec& l, std::vector<Case<A>> cases,
                                    const BenchOptions& options) {
   for (const auto& c : cases) validate_case(c, l);
   try {
@@ -48,6 +56,30 @@ std::unique_ptr<BenchRun> make_run(const CoreLimits& l, std::vector<Case<A>> cas
   } catch (const std::runtime_error& e) {
     throw cli::UsageError(e.what());
   }
+}
+
+// A variant of adapter A's core that runs any cases of A: for a command that
+// knows its core and streams its own cases (hwinterp gcode).
+template <class A>
+struct TypedVariant {
+  VariantSpec spec;
+  std::unique_ptr<BenchRun> (*make)(const VariantSpec&, std::vector<Case<A>>, const BenchOptions&);
+};
+
+// Every variant of adapter A's core, in cores.cmake order.
+template <class A>
+std::vector<TypedVariant<A>> typed_variants() {
+  std::vector<TypedVariant<A>> out;
+  auto add = [&](auto adapter, auto cfg) {
+    using Ad = typename decltype(adapter)::type;
+    using Cfg = typename decltype(cfg)::type;
+    if constexpr (std::is_same_v<Ad, A>) out.push_back({spec_of<A, Cfg>(), &make_run<A, Cfg>});
+  };
+#define HWINTERP_TYPED_VARIANT(core, variant) \
+  add(type_tag<cores::core::Adapter>{}, type_tag<variant##_cfg>{});
+  HWINTERP_VARIANTS(HWINTERP_TYPED_VARIANT)
+#undef HWINTERP_TYPED_VARIANT
+  return out;
 }
 
 }  // namespace hwinterp::tb

@@ -1,8 +1,9 @@
 // Direct lockstep mode, for any core: the HLS core's tick() and the
 // `verilator --cc` model of its RTL stepped together in a plain C++ loop, one
 // clock edge per iteration: the fast mode for long regressions. The shared
-// pins are driven and read here; the core's adapter drives its own
-// (A::drive), with plain stores: no virtual call per pin per clock.
+// pins are driven and read here, and the core's own from its payload's field
+// list (hls/fields.h), with plain stores, only on the clocks where the
+// payload changes: no virtual call per pin per clock.
 #pragma once
 
 #include <verilated.h>
@@ -10,6 +11,7 @@
 #include "hls/stepper_io.h"
 #include "hwinterp_variants.h"
 #include "tb/lockstep/bench.h"
+#include "tb/lockstep/payload_pins.h"
 #include "tb/lockstep/rtl_pins.h"
 
 namespace hwinterp::tb {
@@ -41,9 +43,22 @@ OutPins read_outputs(const Rtl& rtl) {
   return p;
 }
 
-// Drives one frame into the Verilated model and the HLS core's inputs.
+// The payload onto the Verilated --cc model's own input ports, field by
+// field (hls/fields.h).
+template <class Own, class Rtl>
+void drive_own(const Own& own, Rtl& rtl) {
+  hls::for_each_field<Own>([&](const auto& f, std::size_t) {
+    using F = std::decay_t<decltype(f)>;
+    auto& port = f.port_of(rtl);
+    for (int i = 0; i < F::kCount; ++i) put_bits(port, i * F::kWidth, F::kWidth, f.get(own, i));
+  });
+}
+
+// Drives one frame into the Verilated model and the HLS core's inputs; the
+// payload only when its serial differs from `payload_serial` (the one on the
+// pins, updated).
 template <class A, class Cfg, class Rtl, class Inputs>
-void drive_inputs(const Frame<A>& f, Rtl& rtl, Inputs& in) {
+void drive_inputs(const Frame<A>& f, Rtl& rtl, Inputs& in, uint64_t& payload_serial) {
   rtl.rst_ni = f.rst_n;
   rtl.cmd_valid_i = f.cmd_valid;
   rtl.feed_i = static_cast<uint32_t>(f.feed);
@@ -60,7 +75,11 @@ void drive_inputs(const Frame<A>& f, Rtl& rtl, Inputs& in) {
   in.timing.dir_setup = f.timing.dir_setup;
   in.timing.dir_hold = f.timing.dir_hold;
   in.abort = f.abort;
-  A::template drive<Cfg>(f.cmd, f.setup, rtl, in.cmd);
+  if (f.payload_serial() != payload_serial) {
+    payload_serial = f.payload_serial();
+    A::to_own(f.cmd(), f.setup(), in.cmd);
+    drive_own(in.cmd, rtl);
+  }
 }
 
 // One clock of both DUTs: the frame's inputs, the rising edge (inputs and
@@ -72,8 +91,8 @@ void drive_inputs(const Frame<A>& f, Rtl& rtl, Inputs& in) {
 // DUTs, and the two differ only by what the bench itself does.
 template <class A, class Cfg, class Rtl, class Core>
 [[gnu::noinline]] void clock_duts(const Frame<A>& f, Rtl& rtl, Core& hls, typename Core::Inputs& in,
-                                  OutPins& hls_out, OutPins& rtl_out) {
-  drive_inputs<A, Cfg>(f, rtl, in);
+                                  uint64_t& payload_serial, OutPins& hls_out, OutPins& rtl_out) {
+  drive_inputs<A, Cfg>(f, rtl, in, payload_serial);
   rtl.clk_i = 1;
   rtl.eval();
   hls.tick(in);
@@ -101,12 +120,13 @@ void run_direct(B& bench) {
   Rtl rtl(&context);
   Core hls;
   typename Core::Inputs in;
+  uint64_t payload_serial = ~uint64_t{0};  // none on the pins yet
   OutPins hls_out, rtl_out;
   rtl.clk_i = 0;
   rtl.rst_ni = 0;
   rtl.eval();
   while (!bench.finished()) {
-    clock_duts<A, Cfg>(bench.next_frame(), rtl, hls, in, hls_out, rtl_out);
+    clock_duts<A, Cfg>(bench.next_frame(), rtl, hls, in, payload_serial, hls_out, rtl_out);
     bench.observe(hls_out, rtl_out);
   }
   rtl.final();

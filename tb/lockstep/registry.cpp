@@ -15,7 +15,7 @@ namespace {
 template <class A, class Cfg>
 VariantEntry make_variant() {
   VariantEntry v;
-  v.limits = limits_of<Cfg>();
+  v.limits = spec_of<A, Cfg>();
   v.from_args = [l = v.limits](const cli::Args& args, const BenchOptions& options) {
     return make_run<A, Cfg>(l, cases_from_args<A>(args, l, options.seed), options);
   };
@@ -92,7 +92,7 @@ std::string core_list() {
 }
 
 const VariantEntry& CoreEntry::select(const cli::Args& args) const {
-  std::vector<CoreLimits> limits;
+  std::vector<VariantSpec> limits;
   for (const auto& v : variants) limits.push_back(v.limits);
   return variants[select_variant(name, limits, args)];
 }

@@ -3,17 +3,78 @@
 // same input signals and one sc_clock. A process on the falling edge, when
 // both DUTs' outputs have settled, compares them (through Bench<A>) and
 // drives the inputs the next rising edge samples: the same order of events
-// as the direct mode. The shared signals are here; the core's own signals
-// are its adapter's (A::ScPins<Cfg>).
+// as the direct mode. The shared signals are here; the core's own come from
+// its payload's field list (OwnSignals).
 #pragma once
 
 #include <systemc>
 
+#include <tuple>
+#include <utility>
+
 #include "hls/stepper_module.h"
 #include "hwinterp_variants.h"
 #include "tb/lockstep/bench.h"
+#include "tb/lockstep/payload_pins.h"
 
 namespace hwinterp::tb {
+
+// The core's own input signals, one per field of its payload Own
+// (hls/fields.h), named as the RTL's ports and bound to both DUTs.
+template <class Own>
+class OwnSignals {
+  template <class Tuple>
+  struct Types;
+  template <class... F>
+  struct Types<std::tuple<F...>> {
+    using signals = std::tuple<sc_core::sc_signal<hls::pin_t<F::kBits>>...>;
+    using values = std::tuple<hls::pin_t<F::kBits>...>;
+  };
+  using Fields = decltype(Own::fields());
+  static constexpr std::size_t kCount = hls::kFieldCount<Own>;
+
+ public:
+  OwnSignals() : OwnSignals(std::make_index_sequence<kCount>{}) {}
+
+  // The Verilated --sc model: its port of each field's name.
+  template <class Rtl>
+  void bind_rtl(Rtl& rtl) {
+    bind_rtl(rtl, std::make_index_sequence<kCount>{});
+  }
+  // The HLS SC_MODULE: its FieldPorts.
+  template <class Module>
+  void bind_hls(Module& m) {
+    bind_hls(m, std::make_index_sequence<kCount>{});
+  }
+  void write(const Own& own) { write(own, std::make_index_sequence<kCount>{}); }
+
+ private:
+  template <std::size_t... I>
+  explicit OwnSignals(std::index_sequence<I...>) : signals_(std::get<I>(Own::fields()).name...) {}
+  template <class Rtl, std::size_t... I>
+  void bind_rtl(Rtl& rtl, std::index_sequence<I...>) {
+    const Fields fields = Own::fields();
+    (std::get<I>(fields).port_of(rtl)(std::get<I>(signals_)), ...);
+  }
+  template <class Module, std::size_t... I>
+  void bind_hls(Module& m, std::index_sequence<I...>) {
+    (m.template own_port<I>()(std::get<I>(signals_)), ...);
+  }
+  template <std::size_t... I>
+  void write(const Own& own, std::index_sequence<I...>) {
+    const Fields fields = Own::fields();
+    (write_field(std::get<I>(fields), own, std::get<I>(values_), std::get<I>(signals_)), ...);
+  }
+  template <class F, class Value, class Signal>
+  static void write_field(const F& f, const Own& own, Value& v, Signal& s) {
+    for (int i = 0; i < F::kCount; ++i)
+      hls::set_pin_field<F::kBits>(v, i * F::kWidth, F::kWidth, f.get(own, i));
+    s.write(v);
+  }
+
+  typename Types<Fields>::signals signals_;
+  typename Types<Fields>::values values_{};  // kept: building a wide pin value allocates
+};
 
 // Counts benches still running in one elaboration; the last one stops it.
 class ScRunControl {
@@ -46,7 +107,8 @@ SC_MODULE(ScBench) {
   sc_core::sc_signal<pin_t<FEED_W + 1>> feed{"feed"};
   sc_core::sc_signal<pin_t<TIM_W>> step_len{"step_len"}, step_space{"step_space"},
       dir_setup{"dir_setup"}, dir_hold{"dir_hold"};
-  typename A::template ScPins<Cfg> own;  // the core's own input signals
+  using Own = OwnOf<A, Cfg>;
+  OwnSignals<Own> own;  // the core's own input signals
   Outputs hls_out, rtl_out;
   hls::StepperModule<typename A::template Hls<Cfg>> hls{"hls"};
   typename RtlOf<Cfg>::Sc rtl{"rtl"};
@@ -55,6 +117,8 @@ SC_MODULE(ScBench) {
       : sc_core::sc_module(name), bench_(bench), control_(control) {
     bind(hls, hls_out);
     bind(rtl, rtl_out);
+    own.bind_hls(hls);
+    own.bind_rtl(rtl);
     control_.add();
     SC_METHOD(on_falling_edge);
     sensitive << clk.negedge_event();
@@ -80,7 +144,6 @@ SC_MODULE(ScBench) {
     d.pos_o(o.pos);
     d.busy_o(o.busy);
     d.done_o(o.done);
-    own.bind(d);
   }
 
   static OutPins read(const Outputs& o) {
@@ -105,7 +168,11 @@ SC_MODULE(ScBench) {
     dir_setup.write(f.timing.dir_setup);
     dir_hold.write(f.timing.dir_hold);
     abort.write(f.abort);
-    own.write(f.cmd, f.setup);
+    if (f.payload_serial() != payload_serial_) {
+      payload_serial_ = f.payload_serial();
+      A::to_own(f.cmd(), f.setup(), own_value_);
+      own.write(own_value_);
+    }
   }
 
   void on_falling_edge() {
@@ -124,6 +191,8 @@ SC_MODULE(ScBench) {
 
   Bench<A>& bench_;
   ScRunControl& control_;
+  Own own_value_{};
+  uint64_t payload_serial_ = ~uint64_t{0};  // none on the signals yet
   bool started_ = false;
   bool stopped_ = false;
 };

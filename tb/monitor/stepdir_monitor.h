@@ -6,14 +6,10 @@
 #include <cstdint>
 #include <vector>
 
-#include "tb/report/cosim_result.h"
+#include "tb/base/case_result.h"
+#include "tb/base/stepdir_timing.h"
 
 namespace hwinterp::tb {
-
-// Settings in clock cycles; 0 acts as 1 (rtl/stepdir_axis.sv).
-struct StepdirTiming {
-  uint32_t step_len = 1, step_space = 1, dir_setup = 1, dir_hold = 1;
-};
 
 class StepdirMonitor {
  public:

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
-#include "tb/cli/text_table.h"
+#include "tb/base/text_table.h"
 
 namespace hwinterp::tb {
 

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "tb/report/cosim_result.h"
-#include "tb/report/json.h"
+#include "tb/base/case_result.h"
+#include "tb/base/json.h"
 
 namespace hwinterp::tb {
 

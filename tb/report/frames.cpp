@@ -5,7 +5,7 @@
 
 namespace hwinterp::tb {
 
-FrameWriter::FrameWriter(const std::string& path, const CoreLimits& limits,
+FrameWriter::FrameWriter(const std::string& path, const VariantSpec& limits,
                          std::vector<PortSpec> inputs)
     : path_(path), inputs_(std::move(inputs)), out_(path) {
   if (!out_) throw std::runtime_error("cannot write frames '" + path + "'");
@@ -151,7 +151,7 @@ void fill(std::string& text, const std::string& key, const std::string& value) {
 
 }  // namespace
 
-std::string FrameWriter::replay_testbench(const CoreLimits& l,
+std::string FrameWriter::replay_testbench(const VariantSpec& l,
                                           const std::vector<PortSpec>& inputs) {
   int frame_w = 0;
   std::string decls, names, params, net;

@@ -18,8 +18,7 @@
 #include <utility>
 #include <vector>
 
-#include "tb/lockstep/core_limits.h"
-#include "tb/lockstep/pins.h"
+#include "tb/base/variant_spec.h"
 
 namespace hwinterp::tb {
 
@@ -27,7 +26,7 @@ class FrameWriter {
  public:
   // Writes `path` and the replay testbench `path`.sv; throws
   // std::runtime_error naming the file when either cannot be written.
-  FrameWriter(const std::string& path, const CoreLimits& limits, std::vector<PortSpec> inputs);
+  FrameWriter(const std::string& path, const VariantSpec& limits, std::vector<PortSpec> inputs);
   // `in`: one value per input element, in port order.
   void write(const uint64_t* in);
   void close();  // throws on a write error
@@ -35,7 +34,7 @@ class FrameWriter {
   // Width of one frame in bits.
   int frame_bits() const;
   // The replay testbench's text (module <core>_replay_tb).
-  static std::string replay_testbench(const CoreLimits& limits,
+  static std::string replay_testbench(const VariantSpec& limits,
                                       const std::vector<PortSpec>& inputs);
 
  private:

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
-#include "tb/cli/text_table.h"
+#include "tb/base/text_table.h"
 #include "tb/report/cosim_report.h"
 
 namespace hwinterp::tb {

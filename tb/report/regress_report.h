@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "tb/report/json.h"
+#include "tb/base/json.h"
 
 namespace hwinterp::tb {
 

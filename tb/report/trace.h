@@ -13,7 +13,7 @@
 #include <string>
 #include <vector>
 
-#include "tb/lockstep/pins.h"
+#include "tb/base/out_pins.h"
 #include "tb/report/vcd_writer.h"
 
 namespace hwinterp::tb {

@@ -9,8 +9,8 @@
 #include <utility>
 #include <vector>
 
-#include "tb/cli/text_table.h"
-#include "tb/report/json.h"
+#include "tb/base/json.h"
+#include "tb/base/text_table.h"
 
 namespace hwinterp::cli {
 

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "tb/cli/subcommand.h"
-#include "tb/report/json.h"
+#include "tb/base/concat.h"
+#include "tb/base/json.h"
 
 namespace hwinterp::cli {
 

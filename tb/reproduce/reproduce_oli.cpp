@@ -11,7 +11,7 @@
 #include "models/nishioka.h"
 #include "models/optimal_linear.h"
 #include "models/polyline_verifier.h"
-#include "tb/cli/text_table.h"
+#include "tb/base/text_table.h"
 #include "tb/reproduce/reproduce.h"
 
 namespace hwinterp::cli {

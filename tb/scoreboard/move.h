@@ -6,7 +6,7 @@
 #include <array>
 #include <cstdint>
 
-#include "tb/lockstep/core_limits.h"
+#include "tb/base/variant_spec.h"
 
 namespace hwinterp::tb {
 

@@ -9,7 +9,7 @@
 //
 // A is the core's adapter. Its reference model, one per command taken:
 //   A::Reference(const LatticePoint& start, const A::Command&, const A::Setup&,
-//                const CoreLimits&)
+//                const VariantSpec&)
 //   bool next(Move&)                      the next move; false when none is left
 //   double error(const LatticePoint&)     deviation of a visited point from the ideal path
 //   models::ErrorBound bound()            the bound the error is checked against
@@ -33,9 +33,9 @@
 #include <utility>
 #include <vector>
 
-#include "models/dda_line_model.h"
-#include "tb/lockstep/pins.h"
-#include "tb/report/cosim_result.h"
+#include "models/error_bound.h"
+#include "tb/base/case_result.h"
+#include "tb/base/out_pins.h"
 #include "tb/scoreboard/move.h"
 #include "tb/stimulus/settings.h"
 
@@ -56,7 +56,7 @@ class Scoreboard {
 
   // `case_start_cycle`: run cycle before the case's first edge (cycles in
   // reports are counted from the case start).
-  Scoreboard(const CoreLimits& limits, models::LatticePoint start, uint64_t case_start_cycle)
+  Scoreboard(const VariantSpec& limits, models::LatticePoint start, uint64_t case_start_cycle)
       : limits_(limits),
         axes_(limits.axes),
         case_start_cycle_(case_start_cycle),
@@ -279,7 +279,7 @@ class Scoreboard {
                    std::to_string(bound.value));
   }
 
-  CoreLimits limits_;
+  VariantSpec limits_;
   int axes_;
   uint64_t case_start_cycle_;
   models::LatticePoint start_, at_, expected_end_;

@@ -28,7 +28,7 @@ bool delta_job_directive(JobLine<A>& line) {
 // Every delta fits the ACC_W-bit signed cmd_delta_i; throws cli::UsageError
 // naming `where`, the axis, the value and the limits.
 template <class A>
-void validate_deltas(const typename A::Command& c, const CoreLimits& l, const std::string& where) {
+void validate_deltas(const typename A::Command& c, const VariantSpec& l, const std::string& where) {
   const int acc_w = l.param("ACC_W");
   const int64_t max = (int64_t{1} << (acc_w - 1)) - 1, min = -max - 1;
   for (int i = 0; i < l.axes; ++i) {
@@ -44,7 +44,7 @@ void validate_deltas(const typename A::Command& c, const CoreLimits& l, const st
 // One case: a line from `start` to `end` (given for some leading axes; the
 // rest are 0).
 template <class A>
-Case<A> delta_line_case(const CoreLimits& l, const std::string& name,
+Case<A> delta_line_case(const VariantSpec& l, const std::string& name,
                         const std::vector<int64_t>& start, const std::vector<int64_t>& end,
                         const RunSettings<A>& settings) {
   if (start.size() != end.size())
@@ -63,7 +63,7 @@ Case<A> delta_line_case(const CoreLimits& l, const std::string& name,
 // The eight test lines of 004_dc68f1177cad466f.txt, one case each
 // (004_line1 .. 004_line8; axes past the second stay at 0).
 template <class A>
-std::vector<Case<A>> paper_lines_004(const CoreLimits& l, const RunSettings<A>& settings) {
+std::vector<Case<A>> paper_lines_004(const VariantSpec& l, const RunSettings<A>& settings) {
   std::vector<Case<A>> cases;
   int n = 0;
   for (const auto& p : models::paper::kRatioLines)
@@ -74,7 +74,7 @@ std::vector<Case<A>> paper_lines_004(const CoreLimits& l, const RunSettings<A>& 
 
 // --line X0,Y0,..,X1,Y1,..: start then end coordinates (2k numbers).
 template <class A>
-Case<A> delta_line_from_option(const cli::Args& args, const CoreLimits& l,
+Case<A> delta_line_from_option(const cli::Args& args, const VariantSpec& l,
                                const RunSettings<A>& settings) {
   const std::vector<int64_t> v = args.integer_list("line");
   for (const int64_t x : v) check_coordinate(x, "--line");

@@ -2,25 +2,12 @@
 
 namespace hwinterp::tb {
 
-size_t select_variant(const std::string& core, const std::vector<CoreLimits>& variants,
+size_t select_variant(const std::string& core, const std::vector<VariantSpec>& variants,
                       const cli::Args& args) {
-  std::string names;
-  for (const auto& v : variants)
-    names += (names.empty() ? "" : ", ") + v.variant + " (" + std::to_string(v.axes) + " axes)";
-  if (args.given("variant")) {
-    for (size_t i = 0; i < variants.size(); ++i)
-      if (variants[i].variant == args.str("variant")) return i;
-    throw cli::UsageError("--variant: " + core + " has no variant '" + args.str("variant") +
-                          "' (there are: " + names + ")");
-  }
-  if (args.given("axes")) {
-    const int64_t axes = args.integer("axes", 1, kMaxAxes);
-    for (size_t i = 0; i < variants.size(); ++i)
-      if (variants[i].axes == axes) return i;
-    throw cli::UsageError("--axes: no " + core + " variant has " + std::to_string(axes) +
-                          " axes (there are: " + names + ")");
-  }
-  return 0;
+  VariantChoice choice;
+  if (args.given("variant")) choice.name = args.str("variant");
+  if (args.given("axes")) choice.axes = static_cast<int>(args.integer("axes", 1, kMaxAxes));
+  return choose_variant(core, variants, choice);
 }
 
 void declare_cosim_options(cli::Args& args) {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "tb/cli/cli_args.h"
+#include "tb/base/args.h"
 #include "tb/stimulus/stimulus.h"
 
 namespace hwinterp::tb {
@@ -17,7 +17,7 @@ namespace hwinterp::tb {
 // --variant NAME, else the first variant with --axes N axes, else the first:
 // an index into `variants` (one core's, cores.cmake order). Throws
 // cli::UsageError naming the value and listing the variants.
-size_t select_variant(const std::string& core, const std::vector<CoreLimits>& variants,
+size_t select_variant(const std::string& core, const std::vector<VariantSpec>& variants,
                       const cli::Args& args);
 
 // Declares the options every core shares (the core's own come from
@@ -27,7 +27,7 @@ void declare_cosim_options(cli::Args& args);
 
 // Settings from --feed, the timing options and the core's own setup options.
 template <class A>
-RunSettings<A> settings_from_args(const cli::Args& args, const CoreLimits& l) {
+RunSettings<A> settings_from_args(const cli::Args& args, const VariantSpec& l) {
   RunSettings<A> s = default_settings<A>(l);
   if (args.given("feed")) {
     s.feed = parse_feed(args.str("feed"), l, "--feed");
@@ -50,7 +50,7 @@ RunSettings<A> settings_from_args(const cli::Args& args, const CoreLimits& l) {
 // The validated cases; `seed` is --random's. Throws cli::UsageError naming
 // the bad value.
 template <class A>
-std::vector<Case<A>> cases_from_args(const cli::Args& args, const CoreLimits& l, uint64_t seed) {
+std::vector<Case<A>> cases_from_args(const cli::Args& args, const VariantSpec& l, uint64_t seed) {
   const RunSettings<A> settings = settings_from_args<A>(args, l);
   std::vector<Case<A>> cases;
   if (args.given("job")) {

@@ -3,13 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
-#include "tb/cli/cli_args.h"
+#include "tb/base/args.h"
 
 namespace hwinterp::tb {
 
 using cli::UsageError;
 
-StepdirTiming random_timing(Rng& rng, const CoreLimits& limits) {
+StepdirTiming random_timing(Rng& rng, const VariantSpec& limits) {
   auto one = [&] {
     const int64_t v = rng.chance(1, 8) ? rng.range(5, 16) : rng.range(0, 4);
     return static_cast<uint32_t>(std::min<uint64_t>(static_cast<uint64_t>(v), limits.tim_max()));
@@ -22,7 +22,7 @@ StepdirTiming random_timing(Rng& rng, const CoreLimits& limits) {
   return t;
 }
 
-uint64_t random_feed(Rng& rng, const CoreLimits& limits) {
+uint64_t random_feed(Rng& rng, const VariantSpec& limits) {
   const int64_t full = static_cast<int64_t>(limits.full_feed());
   const uint64_t pick = rng.below(10);
   if (pick < 4) return static_cast<uint64_t>(full);  // full feed
@@ -32,7 +32,7 @@ uint64_t random_feed(Rng& rng, const CoreLimits& limits) {
   return static_cast<uint64_t>(rng.range(full / 16, full / 4 - 1));  // slow
 }
 
-uint64_t parse_feed(const std::string& text, const CoreLimits& limits, const std::string& where) {
+uint64_t parse_feed(const std::string& text, const VariantSpec& limits, const std::string& where) {
   if (text == "full") return limits.full_feed();
   if (text.find('.') != std::string::npos) {  // a fraction of the clock rate
     const double f = cli::parse_real(text, where);
@@ -50,7 +50,7 @@ uint64_t parse_feed(const std::string& text, const CoreLimits& limits, const std
   return static_cast<uint64_t>(v);
 }
 
-void validate_feed_and_timing(uint64_t feed, const StepdirTiming& t, const CoreLimits& limits,
+void validate_feed_and_timing(uint64_t feed, const StepdirTiming& t, const VariantSpec& limits,
                               const std::string& where) {
   // feed_i is FEED_W + 1 bits wide; anything at or above 2^FEED_W is full feed.
   if (feed >= 2 * limits.full_feed())
@@ -82,7 +82,7 @@ void check_coordinate(int64_t v, const std::string& what) {
                           " is outside +-2^61 (the lattice the testbench works on)");
 }
 
-models::LatticePoint pad_point(const CoreLimits& limits, const std::vector<int64_t>& v,
+models::LatticePoint pad_point(const VariantSpec& limits, const std::vector<int64_t>& v,
                                const std::string& what) {
   for (const int64_t x : v) check_coordinate(x, what);
   if (v.empty() || static_cast<int>(v.size()) > limits.axes)

@@ -2,10 +2,10 @@
 // validation against a variant's widths and the hang budget. A is the core's
 // adapter; what it supplies here (see tb/cores/dda_line/dda_line_adapter.h):
 //   A::Setup random_setup(Rng&)
-//   A::Command random_command(Rng&, const CoreLimits&, const LatticePoint& at,
+//   A::Command random_command(Rng&, const VariantSpec&, const LatticePoint& at,
 //                             const A::Command& previous)
 //   void apply(const A::Command&, LatticePoint& at)      where the command ends
-//   void validate(const A::Command&, const LatticePoint& from, const CoreLimits&,
+//   void validate(const A::Command&, const LatticePoint& from, const VariantSpec&,
 //                 const std::string& where)             widths; throws UsageError
 //                 (`from`: where the command starts, counted from the case
 //                 start as pos_o counts it)
@@ -18,8 +18,8 @@
 #include <string>
 #include <vector>
 
-#include "tb/cli/cli_args.h"
-#include "tb/lockstep/core_limits.h"
+#include "tb/base/args.h"
+#include "tb/base/variant_spec.h"
 #include "tb/stimulus/case.h"
 #include "tb/stimulus/rng.h"
 #include "tb/stimulus/settings.h"
@@ -27,7 +27,7 @@
 namespace hwinterp::tb {
 
 template <class A>
-RunSettings<A> default_settings(const CoreLimits& limits) {
+RunSettings<A> default_settings(const VariantSpec& limits) {
   RunSettings<A> s;
   s.feed = limits.full_feed();
   s.timing = limits.default_timing;
@@ -35,7 +35,7 @@ RunSettings<A> default_settings(const CoreLimits& limits) {
 }
 
 template <class A>
-RunSettings<A> random_settings(Rng& rng, const CoreLimits& limits) {
+RunSettings<A> random_settings(Rng& rng, const VariantSpec& limits) {
   RunSettings<A> s;
   s.feed = random_feed(rng, limits);
   s.setup = A::random_setup(rng);
@@ -56,7 +56,7 @@ struct RandomExtras {
 // commands and idle gaps, random timing settings, feed words and setups
 // changed while the core runs. The same seed gives the same case everywhere.
 template <class A>
-Case<A> random_case(const CoreLimits& limits, uint64_t commands, uint64_t seed,
+Case<A> random_case(const VariantSpec& limits, uint64_t commands, uint64_t seed,
                     RandomExtras extras = {}) {
   using Kind = typename Item<A>::Kind;
   Rng rng(seed), extra(seed ^ 0x5eedab0f7ULL);
@@ -109,8 +109,8 @@ Case<A> random_case(const CoreLimits& limits, uint64_t commands, uint64_t seed,
 // ("random") and the same seed with aborts and feed holds
 // ("random_abort_hold"); nothing when `commands` is 0.
 template <class A>
-void append_random_streams(std::vector<Case<A>>& cases, const CoreLimits& limits, uint64_t commands,
-                           uint64_t seed) {
+void append_random_streams(std::vector<Case<A>>& cases, const VariantSpec& limits,
+                           uint64_t commands, uint64_t seed) {
   if (!commands) return;
   cases.push_back(random_case<A>(limits, commands, seed));
   cases.push_back(random_case<A>(limits, commands, seed, {true, true}));
@@ -124,7 +124,7 @@ void append_random_streams(std::vector<Case<A>>& cases, const CoreLimits& limits
 // would never end. Throws cli::UsageError naming the case, the job line and
 // the value: nothing is simulated that would overflow.
 template <class A>
-void validate_case(const Case<A>& c, const CoreLimits& limits) {
+void validate_case(const Case<A>& c, const VariantSpec& limits) {
   using Kind = typename Item<A>::Kind;
   const std::string name = "case '" + c.name + "'";
   if (static_cast<int>(c.start.size()) != limits.axes)
@@ -176,7 +176,7 @@ inline uint64_t timing_round(const StepdirTiming& t) {
 // core, with the same margin as cycle_budget(): added to the budget as the
 // bench pulls it.
 template <class A>
-uint64_t streamed_command_budget(const typename A::Command& cmd, const CoreLimits& limits,
+uint64_t streamed_command_budget(const typename A::Command& cmd, const VariantSpec& limits,
                                  const RunSettings<A>& s) {
   const uint64_t feed = s.feed ? s.feed : limits.full_feed();
   const uint64_t feed_period = (limits.full_feed() + feed - 1) / feed;
@@ -187,7 +187,7 @@ uint64_t streamed_command_budget(const typename A::Command& cmd, const CoreLimit
 // margin; running past it means the core hung. (Streamed items add theirs as
 // they come: streamed_command_budget().)
 template <class A>
-uint64_t cycle_budget(const Case<A>& c, const CoreLimits& limits) {
+uint64_t cycle_budget(const Case<A>& c, const VariantSpec& limits) {
   using Kind = typename Item<A>::Kind;
   // Worst case per engine operation: a full feed period plus one complete
   // step/dir timing round (len + space + setup + hold) of stall.
@@ -217,13 +217,13 @@ uint64_t cycle_budget(const Case<A>& c, const CoreLimits& limits) {
 template <class A>
 class JobLine {
  public:
-  JobLine(const std::vector<std::string>& words, std::string where, const CoreLimits& limits,
+  JobLine(const std::vector<std::string>& words, std::string where, const VariantSpec& limits,
           Case<A>& c, models::LatticePoint& at, int line_no)
       : words(words), where(std::move(where)), limits(limits), case_(c), at_(at), line_(line_no) {}
 
   const std::vector<std::string>& words;
   const std::string where;  // "file:line"
-  const CoreLimits& limits;
+  const VariantSpec& limits;
 
   const models::LatticePoint& at() const { return at_; }
   // Appends a command; the planned position follows it (and must stay on the
@@ -295,7 +295,7 @@ class JobLine {
 // naming file:line and the bad value.
 // `path` names the job in messages.
 template <class A>
-std::vector<Case<A>> parse_job(std::istream& in, const std::string& path, const CoreLimits& limits,
+std::vector<Case<A>> parse_job(std::istream& in, const std::string& path, const VariantSpec& limits,
                                const RunSettings<A>& defaults) {
   using Kind = typename Item<A>::Kind;
   std::vector<Case<A>> cases;
@@ -377,7 +377,7 @@ std::vector<Case<A>> parse_job(std::istream& in, const std::string& path, const 
 
 // A job file.
 template <class A>
-std::vector<Case<A>> parse_job(const std::string& path, const CoreLimits& limits,
+std::vector<Case<A>> parse_job(const std::string& path, const VariantSpec& limits,
                                const RunSettings<A>& defaults) {
   std::ifstream in(path);
   if (!in) throw cli::UsageError("--job: cannot read '" + path + "'");

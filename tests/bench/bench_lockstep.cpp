@@ -36,7 +36,7 @@ constexpr uint64_t kSeed = 1;
 constexpr int kPairs = 9;  // BM_Checks: lockstep/full pairs per variant
 
 template <class A>
-Case<A> stream(const CoreLimits& l) {
+Case<A> stream(const VariantSpec& l) {
   Case<A> c = random_case<A>(l, kCommands, kSeed);
   validate_case(c, l);
   return c;
@@ -75,7 +75,7 @@ const std::vector<FrameRun<typename V::Adapter>>& frames() {
   static const std::vector<FrameRun<A>> recorded = [] {
     BenchOptions o;
     o.mode = "direct";
-    Bench<A> bench(V::limits(), {stream<A>(V::limits())}, o);
+    Bench<A> bench(V::limits(), {stream<A>(V::limits())}, o, flatten<V>());
     RecordingBench<A> rec{bench, {}};
     tb::run_direct<A, typename V::Cfg>(rec);
     if (!bench.results().at(0).passed()) throw std::runtime_error("the recorded run failed");
@@ -127,12 +127,13 @@ uint64_t replay() {
   Rtl rtl(&context);
   Core hls;
   typename Core::Inputs in;
+  uint64_t payload_serial = ~uint64_t{0};
   rtl.clk_i = 0;
   rtl.rst_ni = 0;
   rtl.eval();
   for (const FrameRun<A>& run : frames<V>()) {
     for (uint64_t n = 0; n < run.count; ++n) {
-      drive_inputs<A, Cfg>(run.frame, rtl, in);
+      drive_inputs<A, Cfg>(run.frame, rtl, in, payload_serial);
       if constexpr (R == Replay::kRtl) {
         rtl.clk_i = 1;
         rtl.eval();
@@ -188,7 +189,7 @@ void BM_Checks(benchmark::State& state) {
     const double t1 = thread_seconds();
     BenchOptions o;
     o.mode = "direct";
-    Bench<A> bench(V::limits(), {c}, o);
+    Bench<A> bench(V::limits(), {c}, o, flatten<V>());
     tb::run_direct<A, typename V::Cfg>(bench);
     const double t2 = thread_seconds();
     full_clocks += bench.cycles();

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "hwinterp_configs.h"
+#include "tb/lockstep/payload_pins.h"
 #include "tb/stimulus/from_args.h"
 // After the stimulus templates, which the adapters use.
 #include "hwinterp_core_adapters.h"
@@ -21,7 +22,7 @@ using namespace hwinterp;
 using namespace hwinterp::tb;
 
 template <class A>
-void run_core(const std::vector<std::string>& words, const std::vector<CoreLimits>& variants) {
+void run_core(const std::vector<std::string>& words, const std::vector<VariantSpec>& variants) {
   std::vector<std::string> owned = {"hwinterp", "cosim"};
   owned.insert(owned.end(), words.begin(), words.end());
   std::vector<char*> argv;
@@ -34,7 +35,7 @@ void run_core(const std::vector<std::string>& words, const std::vector<CoreLimit
     for (const char* skip : {"job", "vcd", "fst", "path-csv", "dump-frames", "json", "help"})
       if (args.given(skip)) return;
     if (args.given("random") && args.integer("random", 1, 100000000) > 2000) return;
-    const CoreLimits& l = variants[select_variant(A::kName, variants, args)];
+    const VariantSpec& l = variants[select_variant(A::kName, variants, args)];
     (void)args.choice("mode", {"systemc", "direct"});
     (void)cases_from_args<A>(args, l, args.given("seed") ? args.seed("seed") : 1);
   } catch (const cli::UsageError&) {
@@ -44,8 +45,8 @@ void run_core(const std::vector<std::string>& words, const std::vector<CoreLimit
 
 struct CoreEntry {
   std::string name;
-  std::vector<CoreLimits> variants;
-  void (*run)(const std::vector<std::string>&, const std::vector<CoreLimits>&);
+  std::vector<VariantSpec> variants;
+  void (*run)(const std::vector<std::string>&, const std::vector<VariantSpec>&);
 };
 
 const std::vector<CoreEntry>& fuzz_cores() {
@@ -56,7 +57,7 @@ const std::vector<CoreEntry>& fuzz_cores() {
 #undef HWINTERP_FUZZ_CORE
 #define HWINTERP_FUZZ_VARIANT(core, variant) \
   for (auto& e : t)                          \
-    if (e.name == #core) e.variants.push_back(limits_of<variant##_cfg>());
+    if (e.name == #core) e.variants.push_back(spec_of<cores::core::Adapter, variant##_cfg>());
     HWINTERP_VARIANTS(HWINTERP_FUZZ_VARIANT)
 #undef HWINTERP_FUZZ_VARIANT
     return t;

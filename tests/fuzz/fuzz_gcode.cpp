@@ -9,7 +9,7 @@
 #include <sstream>
 #include <string>
 
-#include "tb/cli/cli_args.h"
+#include "tb/base/args.h"
 #include "tb/gcode/ngc_reader.h"
 
 namespace {

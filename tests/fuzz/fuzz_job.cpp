@@ -10,6 +10,7 @@
 #include <string>
 
 #include "hwinterp_configs.h"
+#include "tb/lockstep/payload_pins.h"
 #include "tb/stimulus/stimulus.h"
 // After the stimulus templates, which the adapters use.
 #include "hwinterp_core_adapters.h"
@@ -23,7 +24,7 @@ constexpr uint64_t kMovesPerCommand = 20000;  // keeps one input fast
 
 template <class A, class Cfg>
 void run_job(const std::string& text) {
-  const CoreLimits l = limits_of<Cfg>();
+  const VariantSpec l = spec_of<A, Cfg>();
   std::istringstream in(text);
   std::vector<Case<A>> cases;
   try {

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <string>
 
-#include "tb/cli/cli_args.h"
+#include "tb/base/args.h"
 #include "tb/gcode/machine.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {

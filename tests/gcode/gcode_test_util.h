@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "tb/cli/cli_args.h"
+#include "tb/base/args.h"
 #include "tb/gcode/canon_reader.h"
 #include "tb/gcode/ngc_reader.h"
 

@@ -13,7 +13,7 @@ using A = cores::dda_line::Adapter;
 
 template <class V>
 void long_lines() {
-  const CoreLimits l = V::limits();
+  const VariantSpec l = V::limits();
   for (const bool half : {false, true}) {
     RunSettings<A> s = default_settings<A>(l);
     s.setup.half_preload = half;
@@ -22,8 +22,8 @@ void long_lines() {
     end[0] = (int64_t{1} << 20) + 1;
     end[1] = -333333;
     if (l.axes > 2) end[2] = 7;
-    expect_all_pass(
-        run_direct<V>({delta_line_case<A>(l, "long", std::vector<int64_t>(end.size(), 0), end, s)}));
+    expect_all_pass(run_direct<V>(
+        {delta_line_case<A>(l, "long", std::vector<int64_t>(end.size(), 0), end, s)}));
   }
 }
 

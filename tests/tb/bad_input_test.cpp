@@ -10,7 +10,7 @@
 #include <fstream>
 
 #include "run_hwinterp.h"
-#include "tb/report/json.h"
+#include "tb/base/json.h"
 
 namespace {
 

@@ -19,7 +19,7 @@ class Conformance : public ::testing::Test {
  protected:
   using A = typename V::Adapter;
   using Kind = typename Item<A>::Kind;
-  CoreLimits l = V::limits();
+  VariantSpec l = V::limits();
 
   // A command that keeps the core busy for a while (at least `work` engine
   // operations), drawn from the core's own random generator.
@@ -92,6 +92,7 @@ TYPED_TEST(Conformance, ResetStateAndResetMidMove) {
   typename RtlOf<Cfg>::Cc rtl(&context);
   Core hls;
   typename Core::Inputs in;
+  uint64_t payload_serial = ~uint64_t{0};
   Frame<A> f;
   f.feed = this->l.full_feed();
   f.timing = {2, 2, std::min<uint32_t>(10, static_cast<uint32_t>(this->l.tim_max())), 3};
@@ -102,7 +103,7 @@ TYPED_TEST(Conformance, ResetStateAndResetMidMove) {
   OutPins idle;
   idle.cmd_ready = true;
   auto edge = [&] {
-    drive_inputs<A, Cfg>(f, rtl, in);
+    drive_inputs<A, Cfg>(f, rtl, in, payload_serial);
     rtl.clk_i = 1;
     rtl.eval();
     hls.tick(in);
@@ -125,7 +126,7 @@ TYPED_TEST(Conformance, ResetStateAndResetMidMove) {
   EXPECT_EQ(edge(), idle);
   f.rst_n = true;
   f.cmd_valid = true;
-  f.cmd = this->long_command(64, 3);
+  f.set_cmd(this->long_command(64, 3));
   // Clocks until a few steps are out: a core may compute for a while before
   // its first step (log_stepper's first point takes about 100 clocks).
   int before = 0, after = 0;

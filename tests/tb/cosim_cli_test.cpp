@@ -7,8 +7,8 @@
 #include <fstream>
 
 #include "run_hwinterp.h"
+#include "tb/base/json.h"
 #include "tb/lockstep/registry.h"
-#include "tb/report/json.h"
 
 namespace {
 

@@ -18,7 +18,7 @@
 #include "models/fixed_ratio_model.h"
 #include "models/paper_data_001_003_004.h"
 #include "run_hwinterp.h"
-#include "tb/report/json.h"
+#include "tb/base/json.h"
 
 namespace hwinterp::tb::testing {
 namespace {
@@ -42,7 +42,7 @@ A::Command delta(std::initializer_list<int64_t> d) {
   return c;
 }
 
-Case<A> commands_case(const CoreLimits& l, const std::vector<A::Command>& cmds,
+Case<A> commands_case(const VariantSpec& l, const std::vector<A::Command>& cmds,
                       const RunSettings<A>& s) {
   Case<A> c;
   c.name = "commands";
@@ -89,7 +89,7 @@ std::vector<TimedMove> timed_moves(const Case<A>& c, std::vector<CaseResult>* re
 // error is within the paper's (|dx| + |dy|) / (2 L) as well as the core's
 // own bound, below 1.
 TYPED_TEST(FixedRatioLockstep, PaperLines) {
-  const CoreLimits l = limits_of<TypeParam>();
+  const VariantSpec l = spec_of<A, TypeParam>();
   BenchOptions o;
   o.record_path = true;
   const auto r = run_direct<V<TypeParam>>(paper_lines_004<A>(l, default_settings<A>(l)), o);
@@ -138,7 +138,7 @@ TYPED_TEST(FixedRatioLockstep, PaperLines) {
 // the first step on case cycle FRAC_W + 7, the major axis stepping on every
 // tick: M moves 2 clocks apart.
 TYPED_TEST(FixedRatioLockstep, CompletionInMTicksExactClocks) {
-  const CoreLimits l = limits_of<TypeParam>();
+  const VariantSpec l = spec_of<A, TypeParam>();
   const uint64_t frac_w = static_cast<uint64_t>(l.param("FRAC_W"));
   for (const auto& cmd : {delta({20, 40}), delta({-37, 12, 5}), delta({7, -7, 3, -2}),
                           delta({1, 0}), delta({0, -1})}) {
@@ -175,7 +175,7 @@ TYPED_TEST(FixedRatioLockstep, CompletionInMTicksExactClocks) {
 //   - short lines back to back: one every FRAC_W + 3 clocks, the engine
 //     idle FRAC_W + 3 - 2 M clocks between two.
 TYPED_TEST(FixedRatioLockstep, DividerGapOnlyAfterShortLines) {
-  const CoreLimits l = limits_of<TypeParam>();
+  const VariantSpec l = spec_of<A, TypeParam>();
   const uint64_t frac_w = static_cast<uint64_t>(l.param("FRAC_W"));
   const int64_t no_gap = static_cast<int64_t>((frac_w + 3 + 1) / 2);  // 2 M >= FRAC_W + 3
   // Same directions throughout: no direction change may delay a step.
@@ -206,7 +206,7 @@ TYPED_TEST(FixedRatioLockstep, DividerGapOnlyAfterShortLines) {
 // edge, busy_o down within the bound; a second command afterwards runs
 // exactly from there.
 TYPED_TEST(FixedRatioLockstep, AbortAtEveryCycleLandsOnThePath) {
-  const CoreLimits l = limits_of<TypeParam>();
+  const VariantSpec l = spec_of<A, TypeParam>();
   RunSettings<A> s = default_settings<A>(l);
   s.timing = {2, 1, 1, 1};
   Case<A> c = commands_case(l, {delta({20, -13})}, s);
@@ -241,7 +241,7 @@ TYPED_TEST(FixedRatioLockstep, AbortAtEveryCycleLandsOnThePath) {
 // counts and ends, every move the model's, within the bound.
 TEST(FixedRatioEdge, LongestAcceptedDeltas) {
   using Cfg = fixed_ratio_edge_cfg;
-  const CoreLimits l = limits_of<Cfg>();
+  const VariantSpec l = spec_of<A, Cfg>();
   const int64_t max = (int64_t{1} << (Cfg::ACC_W - 1)) - 1, min = -max - 1;
   const std::vector<A::Command> cmds = {
       delta({max, 0, 0}),          delta({min, 0, 0}),         delta({0, max, min}),
@@ -266,7 +266,7 @@ TEST(FixedRatioEdge, LongestAcceptedDeltas) {
 TEST(FixedRatioWide, NearDiagonalLongLines) {
   {
     using Cfg = fixed_ratio_n2_cfg;
-    const CoreLimits l = limits_of<Cfg>();
+    const VariantSpec l = spec_of<A, Cfg>();
     const int64_t n = 1000000;
     const auto r = run_direct<V<Cfg>>(
         {commands_case(l, {delta({n, n - 1}), delta({-n + 2, -n})}, half_feed_unit_timing<A>(l))});
@@ -278,7 +278,7 @@ TEST(FixedRatioWide, NearDiagonalLongLines) {
   }
   {
     using Cfg = fixed_ratio_n4_cfg;
-    const CoreLimits l = limits_of<Cfg>();
+    const VariantSpec l = spec_of<A, Cfg>();
     const int64_t n = 1000000;
     const auto r = run_direct<V<Cfg>>(
         {commands_case(l, {delta({n, -(n - 1), n - 3, -(n - 2)})}, half_feed_unit_timing<A>(l))});
@@ -337,7 +337,7 @@ std::string write_job(const std::string& name, const std::string& text) {
 
 TEST(FixedRatioStimulus, JobFileLinesAndMoves) {
   using Cfg = fixed_ratio_n2_cfg;
-  const CoreLimits l = limits_of<Cfg>();
+  const VariantSpec l = spec_of<A, Cfg>();
   const auto cases = parse_job<A>(write_job("ok.job",
                                             "case one\n"
                                             "start 10 10\n"
@@ -375,7 +375,7 @@ TEST(FixedRatioStimulus, JobFileLinesAndMoves) {
 // the position window.
 template <class Cfg>
 void random_coverage() {
-  const CoreLimits l = limits_of<Cfg>();
+  const VariantSpec l = spec_of<A, Cfg>();
   const int axes = l.axes;
   const int64_t max = (int64_t{1} << (Cfg::ACC_W - 1)) - 1;
   const bool narrow = l.pos_w < 20;

@@ -1,6 +1,6 @@
 // The report writer: insertion order, bytes that are not UTF-8, non-finite
 // numbers, and write errors that must not pass silently.
-#include "tb/report/json.h"
+#include "tb/base/json.h"
 
 #include <gtest/gtest.h>
 

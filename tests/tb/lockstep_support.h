@@ -23,7 +23,7 @@ template <class A, class C>
 struct Variant {
   using Adapter = A;
   using Cfg = C;
-  static CoreLimits limits() { return limits_of<C>(); }
+  static VariantSpec limits() { return spec_of<A, C>(); }
 };
 
 template <class... T>
@@ -49,12 +49,18 @@ struct VariantName {
   }
 };
 
+// The variant's payload flattener (Bench's traces, frame dumps, reports).
+template <class V>
+FlattenPayload<typename V::Adapter> flatten() {
+  return &flatten_payload<typename V::Adapter, typename V::Cfg>;
+}
+
 template <class V>
 std::vector<CaseResult> run_direct(std::vector<Case<typename V::Adapter>> cases,
                                    BenchOptions o = {}) {
   o.mode = "direct";
   for (const auto& c : cases) validate_case(c, V::limits());
-  Bench<typename V::Adapter> bench(V::limits(), std::move(cases), o);
+  Bench<typename V::Adapter> bench(V::limits(), std::move(cases), o, flatten<V>());
   tb::run_direct<typename V::Adapter, typename V::Cfg>(bench);
   return bench.results();
 }
@@ -66,7 +72,7 @@ std::vector<CaseResult> run_systemc(std::vector<Case<typename V::Adapter>> cases
                                     BenchOptions o = {}) {
   o.mode = "systemc";
   for (const auto& c : cases) validate_case(c, V::limits());
-  Bench<typename V::Adapter> bench(V::limits(), std::move(cases), o);
+  Bench<typename V::Adapter> bench(V::limits(), std::move(cases), o, flatten<V>());
   ScRunControl control;
   ScBench<typename V::Adapter, typename V::Cfg> module("bench", bench, control);
   sc_core::sc_report_handler::set_actions("/OSCI/SystemC", sc_core::SC_INFO,
@@ -107,7 +113,7 @@ inline void expect_all_pass(const std::vector<CaseResult>& results, size_t cases
 // per operation: one operation every second clock (feed 1/2) with 1-clock
 // pulses, spaces, setup and hold.
 template <class A>
-RunSettings<A> half_feed_unit_timing(const CoreLimits& l) {
+RunSettings<A> half_feed_unit_timing(const VariantSpec& l) {
   RunSettings<A> s = default_settings<A>(l);
   s.feed = l.full_feed() / 2;
   s.timing = {1, 1, 1, 1};

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "run_hwinterp.h"
-#include "tb/report/json.h"
+#include "tb/base/json.h"
 
 namespace {
 

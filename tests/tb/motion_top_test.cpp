@@ -27,7 +27,7 @@ TYPED_TEST_SUITE(MotionTopLockstep, Variants);
 
 template <class Cfg>
 std::vector<CaseResult> run_job(const std::string& job, BenchOptions o = {}) {
-  const CoreLimits l = limits_of<Cfg>();
+  const VariantSpec l = spec_of<A, Cfg>();
   std::istringstream in(job);
   auto cases = parse_job<A>(in, "job", l, default_settings<A>(l));
   return testing::run_direct<testing::Variant<A, Cfg>>(std::move(cases), o);
@@ -36,7 +36,7 @@ std::vector<CaseResult> run_job(const std::string& job, BenchOptions o = {}) {
 // An arc in each plane whose slaved axis moves one step on every operation:
 // dc = 2^ACC_W (rtl/dda_axis.sv), the value a W-bit register would lose.
 TYPED_TEST(MotionTopLockstep, SlavedAxisSteppingEveryOperation) {
-  const CoreLimits l = limits_of<TypeParam>();
+  const VariantSpec l = spec_of<A, TypeParam>();
   std::string job = "case every_op\n";
   int64_t z = 0, x = 0, y = 0;
   // XY: centre (5, 0) from the origin, a half circle to (10, 0) ccw, Z slaved.
@@ -66,7 +66,7 @@ TYPED_TEST(MotionTopLockstep, SlavedAxisSteppingEveryOperation) {
 // Each move runs at its own feed word: the same line at a quarter and at an
 // eighth of full feed takes four and eight times its operations in clocks.
 TYPED_TEST(MotionTopLockstep, EachMoveRunsAtItsFeedWord) {
-  const CoreLimits l = limits_of<TypeParam>();
+  const VariantSpec l = spec_of<A, TypeParam>();
   const uint64_t full = l.full_feed();
   const std::string zeros = l.axes > 3 ? " 0 0" : " 0";
   const std::string job =
@@ -89,7 +89,7 @@ TYPED_TEST(MotionTopLockstep, EachMoveRunsAtItsFeedWord) {
 // Lines and arcs in all three planes, helices, back and forth, in one
 // stream; the model's end point and path checks hold throughout.
 TYPED_TEST(MotionTopLockstep, LinesAndArcsInEveryPlaneChain) {
-  const CoreLimits l = limits_of<TypeParam>();
+  const VariantSpec l = spec_of<A, TypeParam>();
   const std::string a = l.axes > 3 ? " 7" : "";
   const std::string job =
       "case chain\n"
@@ -120,7 +120,7 @@ TYPED_TEST(MotionTopLockstep, LinesAndArcsInEveryPlaneChain) {
 
 // Job directives name the bad value and exit through UsageError.
 TYPED_TEST(MotionTopLockstep, BadJobLinesAreUsageErrors) {
-  const CoreLimits l = limits_of<TypeParam>();
+  const VariantSpec l = spec_of<A, TypeParam>();
   auto parse = [&](const std::string& text) {
     std::istringstream in("case bad\n" + text);
     return parse_job<A>(in, "job", l, default_settings<A>(l));

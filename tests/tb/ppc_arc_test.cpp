@@ -33,7 +33,7 @@ struct Arc {
   bool ccw;
 };
 
-Case<A> arc_case(const CoreLimits& l, const Arc& a, const RunSettings<A>& s) {
+Case<A> arc_case(const VariantSpec& l, const Arc& a, const RunSettings<A>& s) {
   return A::arc_case(l, "arc", a.c, a.s, a.e, a.ccw, s);
 }
 
@@ -48,7 +48,7 @@ std::vector<LatticePoint> model_points(const Arc& a) {
 // Runs the arcs one case each and checks every one against the model's path.
 template <class Cfg>
 std::vector<CaseResult> run_arcs(const std::vector<Arc>& arcs, const RunSettings<A>& s) {
-  const CoreLimits l = limits_of<Cfg>();
+  const VariantSpec l = spec_of<A, Cfg>();
   std::vector<Case<A>> cases;
   for (const auto& a : arcs) cases.push_back(arc_case(l, a, s));
   BenchOptions o;
@@ -65,7 +65,7 @@ std::vector<CaseResult> run_arcs(const std::vector<Arc>& arcs, const RunSettings
 // 003's Fig. 6 from the hardware: (4,0)->(0,4) CCW around (0,0), 8 steps
 // through the paper's points, radial error 1 at (3,0).
 TYPED_TEST(PpcArcLockstep, PaperArc003) {
-  const CoreLimits l = limits_of<TypeParam>();
+  const VariantSpec l = spec_of<A, TypeParam>();
   BenchOptions o;
   o.record_path = true;
   const auto r = testing::run_direct<testing::Variant<A, TypeParam>>(
@@ -83,7 +83,7 @@ TYPED_TEST(PpcArcLockstep, PaperArc003) {
 // on the end and is the command's last: no closing line), the pulse falls,
 // 2 tail edges: 2 + 1 + 1 + 2 * 8 + 1 + 2 = 23.
 TYPED_TEST(PpcArcLockstep, PaperArcExactClocks) {
-  const CoreLimits l = limits_of<TypeParam>();
+  const VariantSpec l = spec_of<A, TypeParam>();
   const auto r = testing::run_direct<testing::Variant<A, TypeParam>>(
       {arc_case(l, {{0, 0}, {4, 0}, {0, 4}, true}, testing::half_feed_unit_timing<A>(l))});
   testing::expect_all_pass(r, 1);
@@ -98,7 +98,7 @@ TYPED_TEST(PpcArcLockstep, FullCircles) {
     for (const LatticePoint& s : {LatticePoint{5, 0}, LatticePoint{3, 4}, LatticePoint{0, -5}})
       arcs.push_back({{0, 0}, s, s, ccw});
   arcs.push_back({{-7, 3}, {-7, 13}, {-7, 13}, true});  // centre off the origin
-  const CoreLimits l = limits_of<TypeParam>();
+  const VariantSpec l = spec_of<A, TypeParam>();
   const auto r = run_arcs<TypeParam>(arcs, default_settings<A>(l));
   for (size_t k = 0; k + 1 < r.size(); ++k) {
     EXPECT_EQ(r[k].visited.size(), 41u) << k;
@@ -116,7 +116,7 @@ TYPED_TEST(PpcArcLockstep, OffCircleEnds) {
       {{0, 0}, {10, 0}, {1, 14}, true},    {{2, -3}, {12, -3}, {-7, -10}, false},
       {{0, 0}, {-8, 0}, {-4, -7}, false},  {{0, 0}, {30, 1}, {-21, -22}, false},
       {{0, 0}, {30, 1}, {-21, -22}, true}, {{5, 5}, {5, 25}, {27, 4}, false}};
-  const CoreLimits l = limits_of<TypeParam>();
+  const VariantSpec l = spec_of<A, TypeParam>();
   const auto r = run_arcs<TypeParam>(arcs, default_settings<A>(l));
   int closing = 0;
   for (size_t k = 0; k < arcs.size(); ++k) {
@@ -136,7 +136,7 @@ TYPED_TEST(PpcArcLockstep, DegenerateCommands) {
   const std::vector<Arc> arcs = {{{0, 0}, {0, 0}, {5, -3}, true}, {{0, 0}, {1, 0}, {-4, 2}, false},
                                  {{3, 3}, {3, 2}, {3, 9}, true},  {{0, 0}, {7, 2}, {0, 0}, true},
                                  {{1, 1}, {1, 1}, {1, 1}, false}, {{0, 0}, {1, 0}, {1, 0}, true}};
-  const CoreLimits l = limits_of<TypeParam>();
+  const VariantSpec l = spec_of<A, TypeParam>();
   const auto r = run_arcs<TypeParam>(arcs, default_settings<A>(l));
   EXPECT_EQ(r[4].steps, (std::vector<uint64_t>{0, 0}));
   EXPECT_EQ(r[5].steps, (std::vector<uint64_t>{0, 0}));
@@ -147,7 +147,7 @@ TYPED_TEST(PpcArcLockstep, DegenerateCommands) {
 // the circle, both directions; on the narrow variant the most negative
 // offset and a full circle.
 TYPED_TEST(PpcArcLockstep, LargestRadius) {
-  const CoreLimits l = limits_of<TypeParam>();
+  const VariantSpec l = spec_of<A, TypeParam>();
   const int64_t m = (int64_t{1} << (l.param("COORD_W") - 1)) - 1;
   const LatticePoint c{-m, -m};  // start at the origin: s = (m, m)
   const double r = std::hypot(double(m), double(m));
@@ -172,7 +172,7 @@ TYPED_TEST(PpcArcLockstep, LargestRadius) {
 // no step on the abort edge, the position is a point of the reference path,
 // busy_o falls within max(step_len, 1) - 1 clocks.
 TYPED_TEST(PpcArcLockstep, AbortMidArcLandsOnReferencePath) {
-  const CoreLimits l = limits_of<TypeParam>();
+  const VariantSpec l = spec_of<A, TypeParam>();
   RunSettings<A> s = default_settings<A>(l);
   s.timing = {3, 2, 2, 2};
   for (const Arc& a :
@@ -198,7 +198,7 @@ TYPED_TEST(PpcArcLockstep, AbortMidArcLandsOnReferencePath) {
 
 // The lockstep comparison can fail: a flipped HLS step bit is caught on its cycle.
 TYPED_TEST(PpcArcLockstep, InjectedMismatchIsCaught) {
-  const CoreLimits l = limits_of<TypeParam>();
+  const VariantSpec l = spec_of<A, TypeParam>();
   BenchOptions o;
   o.faults.flip_hls_step_at = 12;
   const auto r = testing::run_direct<testing::Variant<A, TypeParam>>(
@@ -214,7 +214,7 @@ TYPED_TEST(PpcArcLockstep, InjectedMismatchIsCaught) {
 // directions, small and large radii, degenerate starts; and every command
 // fits the widths.
 TYPED_TEST(PpcArcLockstep, RandomCoverage) {
-  const CoreLimits l = limits_of<TypeParam>();
+  const VariantSpec l = spec_of<A, TypeParam>();
   const Case<A> c = random_case<A>(l, 3000, 99);
   validate_case(c, l);
   int crossing = 0, full = 0, on = 0, off = 0, ccw = 0, cw = 0, large = 0, degenerate = 0;
@@ -252,7 +252,7 @@ TYPED_TEST(PpcArcLockstep, RandomCoverage) {
 }
 
 TEST(PpcArcValidate, RefusesWhatWouldOverflow) {
-  const CoreLimits l = limits_of<ppc_arc_edge_cfg>();  // COORD_W 9, POS_W 13
+  const VariantSpec l = spec_of<A, ppc_arc_edge_cfg>();  // COORD_W 9, POS_W 13
   A::Command ok;
   ok.center = {-256, 255};
   ok.end = {0, 0};
@@ -283,7 +283,7 @@ TEST(PpcArcValidate, RefusesWhatWouldOverflow) {
 }
 
 TEST(PpcArcJob, ArcDirective) {
-  const CoreLimits l = limits_of<ppc_arc_edge_cfg>();
+  const VariantSpec l = spec_of<A, ppc_arc_edge_cfg>();
   const std::string path = ::testing::TempDir() + "/ppc_arc.job";
   std::ofstream(path) << "case j\nstart 4 0\narc 0 0 0 4 ccw\narc 0 0 4 0 cw\narc 0 0 0 5 ccw\n";
   const auto cases = parse_job<A>(path, l, default_settings<A>(l));

@@ -26,14 +26,14 @@ class PpcLineLockstep : public ::testing::Test {};
 using Variants = ::testing::Types<ppc_line_a32_cfg, ppc_line_edge_cfg>;
 TYPED_TEST_SUITE(PpcLineLockstep, Variants);
 
-Case<A> line(const CoreLimits& l, const LatticePoint& a, const LatticePoint& b,
+Case<A> line(const VariantSpec& l, const LatticePoint& a, const LatticePoint& b,
              const RunSettings<A>& s) {
   return delta_line_case<A>(l, "line", a, b, s);
 }
 
 // 003's Fig. 4 from the hardware: (0,0)->(4,3) in 7 steps through the paper's points.
 TYPED_TEST(PpcLineLockstep, PaperLine003) {
-  const CoreLimits l = limits_of<TypeParam>();
+  const VariantSpec l = spec_of<A, TypeParam>();
   BenchOptions o;
   o.record_path = true;
   const auto r = testing::run_direct<testing::Variant<A, TypeParam>>(
@@ -53,7 +53,7 @@ TYPED_TEST(PpcLineLockstep, PaperLine003) {
 // it (the feed phase starts at 0: 6, 8, ..., 124), the edge the last pulse
 // falls (busy_o low), 2 tail edges: 2 + 1 + 1 + 2 * 60 + 1 + 2 = 127.
 TYPED_TEST(PpcLineLockstep, Line1SixtyOperationsExactClocks) {
-  const CoreLimits l = limits_of<TypeParam>();
+  const VariantSpec l = spec_of<A, TypeParam>();
   BenchOptions o;
   o.record_path = true;
   const auto r = testing::run_direct<testing::Variant<A, TypeParam>>(
@@ -73,7 +73,7 @@ TYPED_TEST(PpcLineLockstep, Line1SixtyOperationsExactClocks) {
 // The paper lines (004's eight, 003's one) at full feed and default timing,
 // back to back in one case (positions chained) as well as one case each.
 TYPED_TEST(PpcLineLockstep, PaperLines) {
-  const CoreLimits l = limits_of<TypeParam>();
+  const VariantSpec l = spec_of<A, TypeParam>();
   const auto cases = A::paper_lines(l, default_settings<A>(l));
   const auto r = testing::run_direct<testing::Variant<A, TypeParam>>(cases);
   testing::expect_all_pass(r, 9);
@@ -91,7 +91,7 @@ TYPED_TEST(PpcLineLockstep, PaperLines) {
 // give their done_o (the scoreboard counts one per command); all back to
 // back, at full feed.
 TYPED_TEST(PpcLineLockstep, VerticalHorizontalAndZeroLength) {
-  const CoreLimits l = limits_of<TypeParam>();
+  const VariantSpec l = spec_of<A, TypeParam>();
   Case<A> c;
   c.name = "axes";
   c.start = {0, 0};
@@ -118,7 +118,7 @@ TYPED_TEST(PpcLineLockstep, VerticalHorizontalAndZeroLength) {
 // A zero-length command alone: taken, loaded, one engine operation with no
 // step, done_o; busy falls right after it.
 TYPED_TEST(PpcLineLockstep, ZeroLengthTakesOneOperation) {
-  const CoreLimits l = limits_of<TypeParam>();
+  const VariantSpec l = spec_of<A, TypeParam>();
   const auto r = testing::run_direct<testing::Variant<A, TypeParam>>(
       {line(l, {3, -2}, {3, -2}, default_settings<A>(l))});
   testing::expect_all_pass(r, 1);
@@ -130,7 +130,7 @@ TYPED_TEST(PpcLineLockstep, ZeroLengthTakesOneOperation) {
 // Abort in the middle of a line: no step on the abort edge, the position is
 // a point of the reference path, busy_o falls within max(step_len, 1) - 1.
 TYPED_TEST(PpcLineLockstep, AbortMidLineLandsOnReferencePath) {
-  const CoreLimits l = limits_of<TypeParam>();
+  const VariantSpec l = spec_of<A, TypeParam>();
   const models::StepPath model = models::ppc_line({0, 0}, {300, -200});
   const std::vector<LatticePoint> path = model.visited();
   for (uint64_t at : {40u, 333u, 1001u}) {
@@ -155,7 +155,7 @@ TYPED_TEST(PpcLineLockstep, AbortMidLineLandsOnReferencePath) {
 // The widths: the longest deltas a variant takes, both signs (the most
 // negative delta's magnitude needs all ACC_W bits), aborted after a while.
 TYPED_TEST(PpcLineLockstep, FullWidthDeltasAborted) {
-  const CoreLimits l = limits_of<TypeParam>();
+  const VariantSpec l = spec_of<A, TypeParam>();
   const int64_t max = (int64_t{1} << (l.param("ACC_W") - 1)) - 1;
   const int64_t pos = std::min(max, l.pos_max());
   for (const auto& [dx, dy] : std::vector<std::pair<int64_t, int64_t>>{
@@ -171,7 +171,7 @@ TYPED_TEST(PpcLineLockstep, FullWidthDeltasAborted) {
 
 // The lockstep comparison can fail: a flipped HLS step bit is caught on its cycle.
 TYPED_TEST(PpcLineLockstep, InjectedMismatchIsCaught) {
-  const CoreLimits l = limits_of<TypeParam>();
+  const VariantSpec l = spec_of<A, TypeParam>();
   BenchOptions o;
   o.faults.flip_hls_step_at = 20;
   const auto r = testing::run_direct<testing::Variant<A, TypeParam>>(
@@ -184,7 +184,7 @@ TYPED_TEST(PpcLineLockstep, InjectedMismatchIsCaught) {
 }
 
 TEST(PpcLineJob, LineAndMoveDirectives) {
-  const CoreLimits l = limits_of<ppc_line_edge_cfg>();
+  const VariantSpec l = spec_of<A, ppc_line_edge_cfg>();
   const std::string path = ::testing::TempDir() + "/ppc_line.job";
   std::ofstream(path) << "case j\nstart 2 -3\nline 10 -3\nmove 0 -7\nfeed 0.5\nline 0 0\n";
   const auto cases = parse_job<A>(path, l, default_settings<A>(l));

@@ -10,7 +10,7 @@ namespace hwinterp::tb::cores::dda_line {
 using cli::UsageError;
 
 Adapter::Reference::Reference(const models::LatticePoint& start, const Command& c, const Setup& s,
-                              const CoreLimits& l)
+                              const VariantSpec& l)
     : IdealLine(start, c),
       stream_(start, delta_vector(c, start.size()),
               s.half_preload ? models::Preload::kHalf : models::Preload::kZero),
@@ -23,13 +23,13 @@ bool Adapter::Reference::next(Move& m) {
   return true;
 }
 
-uint64_t Adapter::work(const Command& c, const CoreLimits&) {
+uint64_t Adapter::work(const Command& c, const VariantSpec&) {
   return models::dda_iterations(delta_vector(c, kMaxAxes));
 }
 
 // All octants, zero deltas, single-axis moves and reversals of the previous
 // command; positions stay well inside POS_W and deltas inside ACC_W.
-Adapter::Command Adapter::random_command(Rng& rng, const CoreLimits& l,
+Adapter::Command Adapter::random_command(Rng& rng, const VariantSpec& l,
                                          const models::LatticePoint& at, const Command& previous) {
   const size_t axes = static_cast<size_t>(l.axes);
   const int64_t pos_room = l.pos_w >= 20 ? 100000 : (int64_t{1} << (l.pos_w - 2));
@@ -68,7 +68,7 @@ bool Adapter::job_directive(JobLine<Adapter>& line) {
   return false;
 }
 
-std::vector<Case<Adapter>> Adapter::regression_cases(const CoreLimits& l, uint64_t commands,
+std::vector<Case<Adapter>> Adapter::regression_cases(const VariantSpec& l, uint64_t commands,
                                                      uint64_t seed) {
   RunSettings<Adapter> plain = default_settings<Adapter>(l), half = plain;
   half.setup.half_preload = true;
@@ -88,7 +88,7 @@ void Adapter::declare_options(cli::Args& args) {
       .flag("half-preload", "start the accumulators at one half (lower path error)");
 }
 
-std::vector<Case<Adapter>> Adapter::cases_from_options(const cli::Args& args, const CoreLimits& l,
+std::vector<Case<Adapter>> Adapter::cases_from_options(const cli::Args& args, const VariantSpec& l,
                                                        const RunSettings<Adapter>& settings) {
   if (args.given("paper-lines")) return paper_lines_004(l, settings);
   return {delta_line_from_option(args, l, settings)};

@@ -15,10 +15,9 @@
 
 #include "hls/dda_line.h"
 #include "models/dda_line_model.h"
-#include "tb/cli/cli_args.h"
+#include "tb/base/args.h"
+#include "tb/base/variant_spec.h"
 #include "tb/cores/delta_payload.h"
-#include "tb/lockstep/pins.h"
-#include "tb/lockstep/rtl_pins.h"
 #include "tb/scoreboard/move.h"
 #include "tb/stimulus/case.h"
 #include "tb/stimulus/delta_commands.h"
@@ -37,42 +36,18 @@ struct Adapter {
     bool half_preload = false;
   };
 
-  // --- pins -----------------------------------------------------------------
-  static std::vector<PortSpec> own_ports(const CoreLimits& l) {
-    return {delta_port(l), {"half_preload_i", 1, 1}};
-  }
-  static size_t own_values(const Command& c, const Setup& s, const CoreLimits& l, uint64_t* out) {
-    const size_t n = delta_values(c, l, out);
-    out[n] = s.half_preload;
-    return n + 1;
-  }
-  // Direct mode: the Verilated --cc model's and the HLS core's own inputs.
-  template <class Cfg, class Rtl, class Own>
-  static void drive(const Command& c, const Setup& s, Rtl& rtl, Own& own) {
-    drive_deltas<Cfg>(c, rtl, own);
-    rtl.half_preload_i = s.half_preload;
+  // --- payload (hls/dda_line.h Own; tb/lockstep/payload_pins.h) --------------
+  template <class Own>
+  static void to_own(const Command& c, const Setup& s, Own& own) {
+    deltas_to_own(c, own);
     own.half_preload = s.half_preload;
   }
-  // SystemC mode: the own input signals, bound to both DUTs.
-  template <class Cfg>
-  struct ScPins : DeltaScPin<Cfg> {
-    sc_core::sc_signal<bool> half{"half_preload"};
-    template <class Dut>
-    void bind(Dut& d) {
-      DeltaScPin<Cfg>::bind(d);
-      d.half_preload_i(half);
-    }
-    void write(const Command& c, const Setup& s) {
-      DeltaScPin<Cfg>::write(c);
-      half.write(s.half_preload);
-    }
-  };
 
   // --- reference model (models/dda_line_model.h) ------------------------------
   class Reference : public IdealLine {
    public:
     Reference(const models::LatticePoint& start, const Command& c, const Setup& s,
-              const CoreLimits& l);
+              const VariantSpec& l);
     bool next(Move& m);
     models::ErrorBound bound() const { return bound_; }
 
@@ -82,17 +57,17 @@ struct Adapter {
     models::ErrorBound bound_;
   };
   static void apply(const Command& c, models::LatticePoint& at) { apply_deltas(c, at); }
-  static uint64_t work(const Command& c, const CoreLimits&);  // 2^n iterations
+  static uint64_t work(const Command& c, const VariantSpec&);  // 2^n iterations
 
   // --- stimulus ---------------------------------------------------------------
   // Deltas fit ACC_W (validate_case() checks the end point against POS_W;
   // a line stays in its box).
-  static void validate(const Command& c, const models::LatticePoint&, const CoreLimits& l,
+  static void validate(const Command& c, const models::LatticePoint&, const VariantSpec& l,
                        const std::string& where) {
     validate_deltas<Adapter>(c, l, where);
   }
   static Setup random_setup(Rng& rng) { return {rng.chance(1, 2)}; }
-  static Command random_command(Rng& rng, const CoreLimits& l, const models::LatticePoint& at,
+  static Command random_command(Rng& rng, const VariantSpec& l, const models::LatticePoint& at,
                                 const Command& previous);
   // `line X Y ...` (to an absolute point), `move DX DY ...`
   // (tb/stimulus/delta_commands.h), `preload half|zero`.
@@ -100,7 +75,7 @@ struct Adapter {
   // The main regression: the paper lines with plain and half preload, a
   // seeded random stream, and (`commands` > 0) a random stream with aborts
   // and feed holds.
-  static std::vector<Case<Adapter>> regression_cases(const CoreLimits& l, uint64_t commands,
+  static std::vector<Case<Adapter>> regression_cases(const VariantSpec& l, uint64_t commands,
                                                      uint64_t seed);
 
   // --- command line (hwinterp cosim --core dda_line) -------------------------
@@ -109,7 +84,7 @@ struct Adapter {
   static void setup_from_options(const cli::Args& args, Setup& s) {
     s.half_preload = args.given("half-preload");
   }
-  static std::vector<Case<Adapter>> cases_from_options(const cli::Args& args, const CoreLimits& l,
+  static std::vector<Case<Adapter>> cases_from_options(const cli::Args& args, const VariantSpec& l,
                                                        const RunSettings<Adapter>& settings);
 };
 

@@ -8,7 +8,7 @@
 namespace hwinterp::tb::cores::fixed_ratio {
 
 Adapter::Reference::Reference(const models::LatticePoint& start, const Command& c, const Setup&,
-                              const CoreLimits& l)
+                              const VariantSpec& l)
     : IdealLine(start, c),
       stream_(start, delta_vector(c, start.size()), l.param("FRAC_W")),
       bound_(models::fixed_ratio_hw_bound(stream_.delta(), l.param("FRAC_W"))) {}
@@ -20,7 +20,7 @@ bool Adapter::Reference::next(Move& m) {
   return true;
 }
 
-uint64_t Adapter::work(const Command& c, const CoreLimits&) {
+uint64_t Adapter::work(const Command& c, const VariantSpec&) {
   return models::fixed_ratio_ticks(delta_vector(c, kMaxAxes));
 }
 
@@ -31,7 +31,7 @@ uint64_t Adapter::work(const Command& c, const CoreLimits&) {
 // never reversed: each tick costs a pulse and a space on every axis, about 7
 // clocks at the random settings), so a 300-command stream runs a few 10^6
 // clocks (one or two seconds in the direct mode).
-Adapter::Command Adapter::random_command(Rng& rng, const CoreLimits& l,
+Adapter::Command Adapter::random_command(Rng& rng, const VariantSpec& l,
                                          const models::LatticePoint& at, const Command& previous) {
   const size_t axes = static_cast<size_t>(l.axes);
   const int64_t pos_room =
@@ -79,7 +79,7 @@ Adapter::Command Adapter::random_command(Rng& rng, const CoreLimits& l,
   return c;
 }
 
-std::vector<Case<Adapter>> Adapter::regression_cases(const CoreLimits& l, uint64_t commands,
+std::vector<Case<Adapter>> Adapter::regression_cases(const VariantSpec& l, uint64_t commands,
                                                      uint64_t seed) {
   std::vector<Case<Adapter>> cases = paper_lines_004(l, default_settings<Adapter>(l));
   append_random_streams(cases, l, commands, seed);
@@ -92,7 +92,7 @@ void Adapter::declare_options(cli::Args& args) {
       .flag("paper-lines", "the eight test lines of 004_dc68f1177cad466f.txt, one case each");
 }
 
-std::vector<Case<Adapter>> Adapter::cases_from_options(const cli::Args& args, const CoreLimits& l,
+std::vector<Case<Adapter>> Adapter::cases_from_options(const cli::Args& args, const VariantSpec& l,
                                                        const RunSettings<Adapter>& settings) {
   if (args.given("paper-lines")) return paper_lines_004(l, settings);
   return {delta_line_from_option(args, l, settings)};

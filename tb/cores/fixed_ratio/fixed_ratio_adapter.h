@@ -18,7 +18,8 @@
 
 #include "hls/fixed_ratio.h"
 #include "models/fixed_ratio_model.h"
-#include "tb/cli/cli_args.h"
+#include "tb/base/args.h"
+#include "tb/base/variant_spec.h"
 #include "tb/cores/delta_payload.h"
 #include "tb/scoreboard/move.h"
 #include "tb/stimulus/case.h"
@@ -40,7 +41,7 @@ struct Adapter : DeltaPayload<Adapter> {
   class Reference : public IdealLine {
    public:
     Reference(const models::LatticePoint& start, const Command& c, const Setup& s,
-              const CoreLimits& l);
+              const VariantSpec& l);
     bool next(Move& m);
     models::ErrorBound bound() const { return bound_; }
 
@@ -52,24 +53,24 @@ struct Adapter : DeltaPayload<Adapter> {
   // Engine ticks: max(M, 1). (The FRAC_W + 2 divider clocks overlap the
   // previous command; the hang budget's per-command margin covers them
   // where they do not.)
-  static uint64_t work(const Command& c, const CoreLimits&);
+  static uint64_t work(const Command& c, const VariantSpec&);
 
   // --- stimulus ---------------------------------------------------------------
   // Every octant, axis-parallel and zero-length commands, reversals,
   // near-diagonal long lines (on the narrow variants up to the delta width,
   // on the wide ones 10^5 to 10^6 steps) and the extremes of the delta width
   // where the position counters allow them.
-  static Command random_command(Rng& rng, const CoreLimits& l, const models::LatticePoint& at,
+  static Command random_command(Rng& rng, const VariantSpec& l, const models::LatticePoint& at,
                                 const Command& previous);
   // The main regression: the eight lines of 004, a seeded random stream, and
   // (`commands` > 0) a random stream with aborts and feed holds.
-  static std::vector<Case<Adapter>> regression_cases(const CoreLimits& l, uint64_t commands,
+  static std::vector<Case<Adapter>> regression_cases(const VariantSpec& l, uint64_t commands,
                                                      uint64_t seed);
 
   // --- command line (hwinterp cosim --core fixed_ratio) ----------------------
   static void declare_options(cli::Args& args);
   static std::vector<std::string> sources() { return {"line", "paper-lines"}; }
-  static std::vector<Case<Adapter>> cases_from_options(const cli::Args& args, const CoreLimits& l,
+  static std::vector<Case<Adapter>> cases_from_options(const cli::Args& args, const VariantSpec& l,
                                                        const RunSettings<Adapter>& settings);
 };
 

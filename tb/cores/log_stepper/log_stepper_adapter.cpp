@@ -30,12 +30,12 @@ std::string num(double v) {
 
 }  // namespace
 
-models::LogFixedFormat word_format(const CoreLimits& l) {
+models::LogFixedFormat word_format(const VariantSpec& l) {
   return {l.param("INT_W"), l.param("FRAC_W")};
 }
 
 Adapter::Command Adapter::make_command(const models::LogCurveParams& curve,
-                                       const models::LogStepScale& scale, const CoreLimits& l,
+                                       const models::LogStepScale& scale, const VariantSpec& l,
                                        const std::string& where) {
   try {
     models::validate(curve);
@@ -76,19 +76,10 @@ Adapter::Command Adapter::make_command(const models::LogCurveParams& curve,
   return c;
 }
 
-std::vector<PortSpec> Adapter::own_ports(const CoreLimits& l) {
-  const int w = word_format(l).width();
-  return {{"cmd_b_i", 1, w},
-          {"cmd_ab_i", 1, w},
-          {"cmd_dl_i", 1, w},
-          {"cmd_x_end_i", 1, w},
-          {"cmd_k_i", 4, w}};
-}
-
 // --- reference model ----------------------------------------------------------
 
 Adapter::Reference::Reference(const models::LatticePoint& start, const Command& c, const Setup&,
-                              const CoreLimits& l)
+                              const VariantSpec& l)
     : start_(start),
       seg_start_(start),
       seg_end_(start),
@@ -202,7 +193,7 @@ void Adapter::Reference::finish(const models::LatticePoint& at, CaseResult& r,
 
 // --- stimulus -------------------------------------------------------------------
 
-void Adapter::validate(const Command& c, const models::LatticePoint& from, const CoreLimits& l,
+void Adapter::validate(const Command& c, const models::LatticePoint& from, const VariantSpec& l,
                        const std::string& where) {
   const models::LogFixedFormat f = word_format(l);
   const std::string why = models::log_fixed_check(c.words, f, l.param("SEG_W"), l.pos_w);
@@ -214,7 +205,7 @@ void Adapter::validate(const Command& c, const models::LatticePoint& from, const
                        std::to_string(l.pos_w) + "-bit position counter");
 }
 
-Adapter::Command Adapter::random_command(Rng& rng, const CoreLimits& l,
+Adapter::Command Adapter::random_command(Rng& rng, const VariantSpec& l,
                                          const models::LatticePoint& at, const Command&) {
   for (int attempt = 0;; ++attempt) {
     models::LogCurveParams p;
@@ -259,7 +250,7 @@ bool Adapter::job_directive(JobLine<Adapter>& line) {
 
 namespace {
 
-Case<Adapter> curve_case(const CoreLimits& l, const std::string& name,
+Case<Adapter> curve_case(const VariantSpec& l, const std::string& name,
                          const models::LogCurveParams& p, const models::LogStepScale& s,
                          const RunSettings<Adapter>& settings, const std::string& where) {
   Case<Adapter> c;
@@ -272,7 +263,7 @@ Case<Adapter> curve_case(const CoreLimits& l, const std::string& name,
 
 // The paper's steps per unit where the variant's segments hold them, else
 // the largest round scale that fits (the _edge variant's narrow deltas).
-models::LogStepScale paper_scale(const CoreLimits& l) {
+models::LogStepScale paper_scale(const VariantSpec& l) {
   models::LogStepScale s;
   const models::LogCurveParams p;
   for (double spm : {1000.0, 500.0, 200.0, 100.0, 50.0, 20.0}) {
@@ -285,13 +276,13 @@ models::LogStepScale paper_scale(const CoreLimits& l) {
 
 }  // namespace
 
-std::vector<Case<Adapter>> Adapter::paper_cases(const CoreLimits& l,
+std::vector<Case<Adapter>> Adapter::paper_cases(const VariantSpec& l,
                                                 const RunSettings<Adapter>& settings) {
   return {curve_case(l, "001_log", models::LogCurveParams{}, paper_scale(l), settings,
                      "the paper's curve")};
 }
 
-std::vector<Case<Adapter>> Adapter::regression_cases(const CoreLimits& l, uint64_t commands,
+std::vector<Case<Adapter>> Adapter::regression_cases(const VariantSpec& l, uint64_t commands,
                                                      uint64_t seed) {
   std::vector<Case<Adapter>> cases = paper_cases(l, default_settings<Adapter>(l));
   append_random_streams(cases, l, commands, seed);
@@ -314,7 +305,7 @@ void Adapter::declare_options(cli::Args& args) {
             "X to 30 mm)");
 }
 
-std::vector<Case<Adapter>> Adapter::cases_from_options(const cli::Args& args, const CoreLimits& l,
+std::vector<Case<Adapter>> Adapter::cases_from_options(const cli::Args& args, const VariantSpec& l,
                                                        const RunSettings<Adapter>& settings) {
   if (args.given("paper-log")) return paper_cases(l, settings);
   models::LogCurveParams p;

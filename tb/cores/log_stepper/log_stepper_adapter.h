@@ -32,10 +32,9 @@
 #include "models/dda_line_model.h"
 #include "models/log_curve.h"
 #include "models/log_stepper_model.h"
-#include "tb/cli/cli_args.h"
-#include "tb/lockstep/pins.h"
-#include "tb/lockstep/rtl_pins.h"
-#include "tb/report/cosim_result.h"
+#include "tb/base/args.h"
+#include "tb/base/case_result.h"
+#include "tb/base/variant_spec.h"
 #include "tb/scoreboard/move.h"
 #include "tb/stimulus/case.h"
 #include "tb/stimulus/rng.h"
@@ -48,7 +47,7 @@ class JobLine;
 namespace hwinterp::tb::cores::log_stepper {
 
 // The variant's word format.
-models::LogFixedFormat word_format(const CoreLimits& l);
+models::LogFixedFormat word_format(const VariantSpec& l);
 
 struct Adapter {
   static constexpr const char* kName = "log_stepper";
@@ -70,67 +69,24 @@ struct Adapter {
   // The command for a curve on variant l; throws cli::UsageError naming the
   // value that keeps it off the core (`where` says whose it is).
   static Command make_command(const models::LogCurveParams& curve,
-                              const models::LogStepScale& scale, const CoreLimits& l,
+                              const models::LogStepScale& scale, const VariantSpec& l,
                               const std::string& where);
 
-  // --- pins -----------------------------------------------------------------
-  static std::vector<PortSpec> own_ports(const CoreLimits& l);
-  static size_t own_values(const Command& c, const Setup&, const CoreLimits&, uint64_t* out) {
-    out[0] = c.words.b;
-    out[1] = c.words.ab;
-    out[2] = c.words.dl;
-    out[3] = c.words.x_end;
-    for (size_t i = 0; i < 4; ++i) out[4 + i] = c.words.k[i];
-    return 8;
-  }
-  // Direct mode: the Verilated --cc model's and the HLS core's own inputs.
-  template <class Cfg, class Rtl, class Own>
-  static void drive(const Command& c, const Setup&, Rtl& rtl, Own& own) {
-    constexpr int W = Cfg::INT_W + Cfg::FRAC_W;
-    put_bits(rtl.cmd_b_i, 0, W, c.words.b);
-    put_bits(rtl.cmd_ab_i, 0, W, c.words.ab);
-    put_bits(rtl.cmd_dl_i, 0, W, c.words.dl);
-    put_bits(rtl.cmd_x_end_i, 0, W, c.words.x_end);
+  // --- payload (hls/log_stepper.h Own; tb/lockstep/payload_pins.h) -----------
+  template <class Own>
+  static void to_own(const Command& c, const Setup&, Own& own) {
     own.b = c.words.b;
     own.ab = c.words.ab;
     own.dl = c.words.dl;
     own.x_end = c.words.x_end;
-    for (int i = 0; i < 4; ++i) {
-      put_bits(rtl.cmd_k_i, i * W, W, c.words.k[static_cast<size_t>(i)]);
-      own.k[i] = c.words.k[static_cast<size_t>(i)];
-    }
+    for (size_t i = 0; i < 4; ++i) own.k[i] = c.words.k[i];
   }
-  // SystemC mode: the own input signals, bound to both DUTs.
-  template <class Cfg>
-  struct ScPins {
-    static constexpr int W = Cfg::INT_W + Cfg::FRAC_W;
-    sc_core::sc_signal<hls::pin_t<W>> b{"cmd_b"}, ab{"cmd_ab"}, dl{"cmd_dl"}, x_end{"cmd_x_end"};
-    sc_core::sc_signal<hls::pin_t<4 * W>> k{"cmd_k"};
-    hls::pin_t<4 * W> k_value = 0;  // kept: building a wide pin value allocates
-    template <class Dut>
-    void bind(Dut& d) {
-      d.cmd_b_i(b);
-      d.cmd_ab_i(ab);
-      d.cmd_dl_i(dl);
-      d.cmd_x_end_i(x_end);
-      d.cmd_k_i(k);
-    }
-    void write(const Command& c, const Setup&) {
-      b.write(c.words.b);
-      ab.write(c.words.ab);
-      dl.write(c.words.dl);
-      x_end.write(c.words.x_end);
-      for (int i = 0; i < 4; ++i)
-        hls::set_pin_field<4 * W>(k_value, i * W, W, c.words.k[static_cast<size_t>(i)]);
-      k.write(k_value);
-    }
-  };
 
   // --- reference model ---------------------------------------------------------
   class Reference {
    public:
     Reference(const models::LatticePoint& start, const Command& c, const Setup& s,
-              const CoreLimits& l);
+              const VariantSpec& l);
     bool next(Move& m);
     // Normal distance of a visited point from the running segment's line.
     double error(const models::LatticePoint& p) const;
@@ -158,33 +114,33 @@ struct Adapter {
   static void apply(const Command& c, models::LatticePoint& at) {
     for (size_t i = 0; i < 4 && i < at.size(); ++i) at[i] += c.end[i];
   }
-  static uint64_t work(const Command& c, const CoreLimits&) { return c.work; }
+  static uint64_t work(const Command& c, const VariantSpec&) { return c.work; }
 
   // --- stimulus ---------------------------------------------------------------
-  static void validate(const Command& c, const models::LatticePoint& from, const CoreLimits& l,
+  static void validate(const Command& c, const models::LatticePoint& from, const VariantSpec& l,
                        const std::string& where);
   static Setup random_setup(Rng&) { return {}; }
   // Short curves (x_end up to 3 mm) over the accepted ranges: D1 4-20 mm,
   // spiral 15-40 deg, cone 2-15 deg, rake 2-20 deg, dl 0.1-0.5 mm, 20-400
   // steps/mm, 5-50 steps/deg.
-  static Command random_command(Rng& rng, const CoreLimits& l, const models::LatticePoint& at,
+  static Command random_command(Rng& rng, const VariantSpec& l, const models::LatticePoint& at,
                                 const Command& previous);
   // `curve D1 S C R DL XEND [STEPS_PER_MM [STEPS_PER_DEG]]`.
   static bool job_directive(JobLine<Adapter>& line);
   // The paper's case: D1 10 mm, S 30, C 5, r 8 deg, dl 0.2 mm, X to 30 mm,
   // 1000 steps/mm and 1000 steps/deg (152 points).
-  static std::vector<Case<Adapter>> paper_cases(const CoreLimits& l,
+  static std::vector<Case<Adapter>> paper_cases(const VariantSpec& l,
                                                 const RunSettings<Adapter>& settings);
   // The main regression: the paper case at full feed, a seeded random
   // stream, and (`commands` > 0) a random stream with aborts and feed holds.
-  static std::vector<Case<Adapter>> regression_cases(const CoreLimits& l, uint64_t commands,
+  static std::vector<Case<Adapter>> regression_cases(const VariantSpec& l, uint64_t commands,
                                                      uint64_t seed);
 
   // --- command line (hwinterp cosim --core log_stepper) ----------------------
   static void declare_options(cli::Args& args);
   static std::vector<std::string> sources() { return {"d1", "paper-log"}; }
   static void setup_from_options(const cli::Args&, Setup&) {}
-  static std::vector<Case<Adapter>> cases_from_options(const cli::Args& args, const CoreLimits& l,
+  static std::vector<Case<Adapter>> cases_from_options(const cli::Args& args, const VariantSpec& l,
                                                        const RunSettings<Adapter>& settings);
 };
 

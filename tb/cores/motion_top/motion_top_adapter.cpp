@@ -24,7 +24,7 @@ int64_t signed_max(int w) { return (int64_t{1} << (w - 1)) - 1; }
 
 double unit(Rng& rng) { return static_cast<double>(rng.next() >> 11) * 0x1.0p-53; }
 
-uint64_t full_feed(const CoreLimits& l) { return l.full_feed(); }
+uint64_t full_feed(const VariantSpec& l) { return l.full_feed(); }
 
 // The plane's axes as machine axes, and whether `i` is one of them.
 bool in_plane(const MotionCommand& c, int i) {
@@ -34,36 +34,8 @@ bool in_plane(const MotionCommand& c, int i) {
 
 }  // namespace
 
-std::vector<PortSpec> Adapter::own_ports(const CoreLimits& l) {
-  const int cw = l.param("COORD_W");
-  return {{"cmd_arc_i", 1, 1},
-          {"cmd_delta_i", l.axes, l.param("ACC_W")},
-          {"cmd_plane_i", 1, 2},
-          {"cmd_center_i", 2, cw},
-          {"cmd_end_i", 2, cw},
-          {"cmd_ccw_i", 1, 1},
-          {"cmd_ops_i", 1, l.param("OPS_W")},
-          {"cmd_feed_i", 1, l.feed_w + 1}};
-}
-
-size_t Adapter::own_values(const Command& c, const Setup&, const CoreLimits& l, uint64_t* out) {
-  size_t k = 0;
-  out[k++] = c.kind == MotionKind::kArc;
-  for (int i = 0; i < l.axes; ++i)
-    out[k++] = static_cast<uint64_t>(c.delta[static_cast<size_t>(i)]);
-  out[k++] = static_cast<uint64_t>(c.plane);
-  out[k++] = static_cast<uint64_t>(c.center[0]);
-  out[k++] = static_cast<uint64_t>(c.center[1]);
-  out[k++] = static_cast<uint64_t>(c.end[0]);
-  out[k++] = static_cast<uint64_t>(c.end[1]);
-  out[k++] = c.ccw;
-  out[k++] = c.ops;
-  out[k++] = c.feed;
-  return k;
-}
-
 Adapter::Reference::Reference(const models::LatticePoint& start, const Command& c, const Setup&,
-                              const CoreLimits& l)
+                              const VariantSpec& l)
     : start_(start), cmd_(c), stream_(start, c, l.axes), ideal_(start, c, l.axes) {
   move_.point = start;
 }
@@ -115,13 +87,13 @@ void Adapter::apply(const Command& c, models::LatticePoint& at) {
   for (size_t i = 0; i < at.size(); ++i) at[i] += d[i];
 }
 
-uint64_t Adapter::work(const Command& c, const CoreLimits& l) {
+uint64_t Adapter::work(const Command& c, const VariantSpec& l) {
   const uint64_t feed = std::max<uint64_t>(c.feed, 1);
   const uint64_t per_op = (full_feed(l) + feed - 1) / feed;
   return models::motion_operations(c) * std::max<uint64_t>(per_op, 1) + 4;
 }
 
-void Adapter::validate(const Command& c, const models::LatticePoint& from, const CoreLimits& l,
+void Adapter::validate(const Command& c, const models::LatticePoint& from, const VariantSpec& l,
                        const std::string& where) {
   const int acc_w = l.param("ACC_W"), coord_w = l.param("COORD_W"), ops_w = l.param("OPS_W");
   if (c.feed < 1 || c.feed > full_feed(l))
@@ -182,7 +154,7 @@ void Adapter::validate(const Command& c, const models::LatticePoint& from, const
   }
 }
 
-Adapter::Command Adapter::random_command(Rng& rng, const CoreLimits& l,
+Adapter::Command Adapter::random_command(Rng& rng, const VariantSpec& l,
                                          const models::LatticePoint& at, const Command& previous) {
   const int64_t cmax = signed_max(l.param("COORD_W"));
   const int64_t dmax = signed_max(l.param("ACC_W"));
@@ -317,7 +289,7 @@ bool Adapter::job_directive(JobLine<Adapter>& line) {
   return true;
 }
 
-std::vector<Case<Adapter>> Adapter::regression_cases(const CoreLimits& l, uint64_t commands,
+std::vector<Case<Adapter>> Adapter::regression_cases(const VariantSpec& l, uint64_t commands,
                                                      uint64_t seed) {
   const RunSettings<Adapter> plain = default_settings<Adapter>(l);
   std::vector<Case<Adapter>> cases = cases_from_options(cli::Args("", ""), l, plain);
@@ -331,7 +303,7 @@ void Adapter::declare_options(cli::Args& args) {
             "ZX and YZ");
 }
 
-std::vector<Case<Adapter>> Adapter::cases_from_options(const cli::Args&, const CoreLimits& l,
+std::vector<Case<Adapter>> Adapter::cases_from_options(const cli::Args&, const VariantSpec& l,
                                                        const RunSettings<Adapter>& settings) {
   // Scaled to the variant: a radius of a quarter of the arc coordinates' reach, at most 400.
   const int64_t r = std::min<int64_t>(400, signed_max(l.param("COORD_W")) / 4);

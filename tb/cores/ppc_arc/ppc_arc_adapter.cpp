@@ -22,7 +22,7 @@ double norm(int64_t x, int64_t y) {
   return std::hypot(static_cast<double>(x), static_cast<double>(y));
 }
 
-int64_t coord_max(const CoreLimits& l) { return (int64_t{1} << (l.param("COORD_W") - 1)) - 1; }
+int64_t coord_max(const VariantSpec& l) { return (int64_t{1} << (l.param("COORD_W") - 1)) - 1; }
 
 // A uniformly drawn real in [0, 1).
 double unit(Rng& rng) { return static_cast<double>(rng.next() >> 11) * 0x1.0p-53; }
@@ -44,7 +44,7 @@ models::LatticePoint lattice_point_on(Rng& rng, int64_t r2) {
 }  // namespace
 
 Adapter::Reference::Reference(const models::LatticePoint& start, const Command& c, const Setup&,
-                              const CoreLimits&)
+                              const VariantSpec&)
     : start_(start),
       stream_(relative_stream(c)),
       ideal_({c.center[0], c.center[1]}, {0, 0}, {c.end[0], c.end[1]}, c.ccw) {}
@@ -62,11 +62,11 @@ double Adapter::Reference::error(const models::LatticePoint& p) const {
   return ideal_.error(rel_);
 }
 
-uint64_t Adapter::work(const Command& c, const CoreLimits&) {
+uint64_t Adapter::work(const Command& c, const VariantSpec&) {
   return relative_stream(c).operation_bound();
 }
 
-void Adapter::validate(const Command& c, const models::LatticePoint& from, const CoreLimits& l,
+void Adapter::validate(const Command& c, const models::LatticePoint& from, const VariantSpec& l,
                        const std::string& where) {
   const int w = l.param("COORD_W");
   const int64_t max = coord_max(l), min = -max - 1;
@@ -95,7 +95,7 @@ void Adapter::validate(const Command& c, const models::LatticePoint& from, const
   }
 }
 
-Adapter::Command Adapter::random_command(Rng& rng, const CoreLimits& l,
+Adapter::Command Adapter::random_command(Rng& rng, const VariantSpec& l,
                                          const models::LatticePoint& at, const Command&) {
   const int64_t cmax = coord_max(l);
   // Where the path may wander (the start of every command stays inside).
@@ -184,7 +184,7 @@ bool Adapter::job_directive(JobLine<Adapter>& line) {
   return true;
 }
 
-Case<Adapter> Adapter::arc_case(const CoreLimits& l, const std::string& name,
+Case<Adapter> Adapter::arc_case(const VariantSpec& l, const std::string& name,
                                 const models::LatticePoint& center,
                                 const models::LatticePoint& start, const models::LatticePoint& end,
                                 bool ccw, const RunSettings<Adapter>& settings) {
@@ -200,12 +200,12 @@ Case<Adapter> Adapter::arc_case(const CoreLimits& l, const std::string& name,
   return c;
 }
 
-std::vector<Case<Adapter>> Adapter::paper_arcs(const CoreLimits& l,
+std::vector<Case<Adapter>> Adapter::paper_arcs(const VariantSpec& l,
                                                const RunSettings<Adapter>& settings) {
   return {arc_case(l, "003_arc", {0, 0}, {4, 0}, {0, 4}, true, settings)};
 }
 
-std::vector<Case<Adapter>> Adapter::regression_cases(const CoreLimits& l, uint64_t commands,
+std::vector<Case<Adapter>> Adapter::regression_cases(const VariantSpec& l, uint64_t commands,
                                                      uint64_t seed) {
   const RunSettings<Adapter> plain = default_settings<Adapter>(l);
   std::vector<Case<Adapter>> cases = paper_arcs(l, plain);
@@ -222,7 +222,7 @@ void Adapter::declare_options(cli::Args& args) {
       .flag("paper-arcs", "the arc (4,0)->(0,4) CCW around (0,0) of 003_b291717b57510359.txt");
 }
 
-std::vector<Case<Adapter>> Adapter::cases_from_options(const cli::Args& args, const CoreLimits& l,
+std::vector<Case<Adapter>> Adapter::cases_from_options(const cli::Args& args, const VariantSpec& l,
                                                        const RunSettings<Adapter>& settings) {
   if (args.given("paper-arcs")) return paper_arcs(l, settings);
   const std::string text = args.str("arc");

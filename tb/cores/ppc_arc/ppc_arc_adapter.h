@@ -17,9 +17,8 @@
 
 #include "hls/ppc_arc.h"
 #include "models/ppc.h"
-#include "tb/cli/cli_args.h"
-#include "tb/lockstep/pins.h"
-#include "tb/lockstep/rtl_pins.h"
+#include "tb/base/args.h"
+#include "tb/base/variant_spec.h"
 #include "tb/scoreboard/move.h"
 #include "tb/stimulus/case.h"
 #include "tb/stimulus/rng.h"
@@ -45,58 +44,15 @@ struct Adapter {
   };
   struct Setup {};
 
-  // --- pins -----------------------------------------------------------------
-  static std::vector<PortSpec> own_ports(const CoreLimits& l) {
-    const int w = l.param("COORD_W");
-    return {{"cmd_center_i", 2, w}, {"cmd_end_i", 2, w}, {"cmd_ccw_i", 1, 1}};
-  }
-  static size_t own_values(const Command& c, const Setup&, const CoreLimits&, uint64_t* out) {
-    out[0] = static_cast<uint64_t>(c.center[0]);
-    out[1] = static_cast<uint64_t>(c.center[1]);
-    out[2] = static_cast<uint64_t>(c.end[0]);
-    out[3] = static_cast<uint64_t>(c.end[1]);
-    out[4] = c.ccw;
-    return 5;
-  }
-  // Direct mode: the Verilated --cc model's and the HLS core's own inputs.
-  template <class Cfg, class Rtl, class Own>
-  static void drive(const Command& c, const Setup&, Rtl& rtl, Own& own) {
-    for (int i = 0; i < 2; ++i) {
-      const uint64_t cen = static_cast<uint64_t>(c.center[static_cast<size_t>(i)]);
-      const uint64_t end = static_cast<uint64_t>(c.end[static_cast<size_t>(i)]);
-      put_bits(rtl.cmd_center_i, i * Cfg::COORD_W, Cfg::COORD_W, cen);
-      put_bits(rtl.cmd_end_i, i * Cfg::COORD_W, Cfg::COORD_W, end);
-      own.center[i] = cen;
-      own.end[i] = end;
+  // --- payload (hls/ppc_arc.h Own; tb/lockstep/payload_pins.h) ---------------
+  template <class Own>
+  static void to_own(const Command& c, const Setup&, Own& own) {
+    for (size_t i = 0; i < 2; ++i) {
+      own.center[i] = static_cast<uint64_t>(c.center[i]);
+      own.end[i] = static_cast<uint64_t>(c.end[i]);
     }
-    rtl.cmd_ccw_i = c.ccw;
     own.ccw = c.ccw;
   }
-  // SystemC mode: the own input signals, bound to both DUTs.
-  template <class Cfg>
-  struct ScPins {
-    static constexpr int W = 2 * Cfg::COORD_W;
-    sc_core::sc_signal<hls::pin_t<W>> center{"cmd_center"}, end{"cmd_end"};
-    sc_core::sc_signal<bool> ccw{"cmd_ccw"};
-    hls::pin_t<W> center_value = 0, end_value = 0;  // kept: wide pin values allocate
-    template <class Dut>
-    void bind(Dut& d) {
-      d.cmd_center_i(center);
-      d.cmd_end_i(end);
-      d.cmd_ccw_i(ccw);
-    }
-    void write(const Command& c, const Setup&) {
-      for (int i = 0; i < 2; ++i) {
-        hls::set_pin_field<W>(center_value, i * Cfg::COORD_W, Cfg::COORD_W,
-                              static_cast<uint64_t>(c.center[static_cast<size_t>(i)]));
-        hls::set_pin_field<W>(end_value, i * Cfg::COORD_W, Cfg::COORD_W,
-                              static_cast<uint64_t>(c.end[static_cast<size_t>(i)]));
-      }
-      center.write(center_value);
-      end.write(end_value);
-      ccw.write(c.ccw);
-    }
-  };
 
   // --- reference model (models/ppc.h) -----------------------------------------
   // Works relative to the command's start, so absolute positions anywhere in
@@ -104,7 +60,7 @@ struct Adapter {
   class Reference {
    public:
     Reference(const models::LatticePoint& start, const Command& c, const Setup& s,
-              const CoreLimits& l);
+              const VariantSpec& l);
     bool next(Move& m);
     double error(const models::LatticePoint& p) const;
     models::ErrorBound bound() const { return ideal_.bound(); }
@@ -125,42 +81,42 @@ struct Adapter {
     at[1] += c.end[1];
   }
   // Engine operations, at most (models::PpcArcStream::operation_bound()).
-  static uint64_t work(const Command& c, const CoreLimits&);
+  static uint64_t work(const Command& c, const VariantSpec&);
 
   // --- stimulus ---------------------------------------------------------------
   // Every coordinate fits COORD_W (signed) and the whole circle, centre +-
   // (max(rs, re) + 2), fits the position counters (POS_W, signed, from the
   // case start).
-  static void validate(const Command& c, const models::LatticePoint& from, const CoreLimits& l,
+  static void validate(const Command& c, const models::LatticePoint& from, const VariantSpec& l,
                        const std::string& where);
   static Setup random_setup(Rng&) { return {}; }
   // Both directions; small, medium and large radii within the widths (large
   // ones with short sweeps); quadrant crossings, full circles (end == start),
   // ends on the circle, rounded from a real point on it, or a few steps off;
   // now and then a degenerate command (start within one step of the centre).
-  static Command random_command(Rng& rng, const CoreLimits& l, const models::LatticePoint& at,
+  static Command random_command(Rng& rng, const VariantSpec& l, const models::LatticePoint& at,
                                 const Command& previous);
   // `arc CX CY X1 Y1 cw|ccw`: absolute centre and end; the start is the
   // planned position.
   static bool job_directive(JobLine<Adapter>& line);
-  static Case<Adapter> arc_case(const CoreLimits& l, const std::string& name,
+  static Case<Adapter> arc_case(const VariantSpec& l, const std::string& name,
                                 const models::LatticePoint& center,
                                 const models::LatticePoint& start, const models::LatticePoint& end,
                                 bool ccw, const RunSettings<Adapter>& settings);
   // 003_b291717b57510359.txt's arc (4,0)->(0,4) CCW around (0,0) (003_arc).
-  static std::vector<Case<Adapter>> paper_arcs(const CoreLimits& l,
+  static std::vector<Case<Adapter>> paper_arcs(const VariantSpec& l,
                                                const RunSettings<Adapter>& settings);
   // The main regression: the paper arc, a full circle and an off-circle end,
   // a seeded random stream, and (`commands` > 0) a random stream with aborts
   // and feed holds.
-  static std::vector<Case<Adapter>> regression_cases(const CoreLimits& l, uint64_t commands,
+  static std::vector<Case<Adapter>> regression_cases(const VariantSpec& l, uint64_t commands,
                                                      uint64_t seed);
 
   // --- command line (hwinterp cosim --core ppc_arc) --------------------------
   static void declare_options(cli::Args& args);
   static std::vector<std::string> sources() { return {"arc", "paper-arcs"}; }
   static void setup_from_options(const cli::Args&, Setup&) {}
-  static std::vector<Case<Adapter>> cases_from_options(const cli::Args& args, const CoreLimits& l,
+  static std::vector<Case<Adapter>> cases_from_options(const cli::Args& args, const VariantSpec& l,
                                                        const RunSettings<Adapter>& settings);
 };
 

@@ -37,7 +37,7 @@ int64_t random_magnitude(Rng& rng, int64_t cap) {
 }  // namespace
 
 Adapter::Reference::Reference(const models::LatticePoint& start, const Command& c, const Setup&,
-                              const CoreLimits&)
+                              const VariantSpec&)
     : IdealLine(start, c),
       stream_(start, end_),
       bound_{models::ppc_line_error_bound(start_, end_), false} {}
@@ -49,7 +49,7 @@ bool Adapter::Reference::next(Move& m) {
   return true;
 }
 
-uint64_t Adapter::work(const Command& c, const CoreLimits&) {
+uint64_t Adapter::work(const Command& c, const VariantSpec&) {
   return std::max<uint64_t>(
       static_cast<uint64_t>(std::llabs(c.delta[0])) + static_cast<uint64_t>(std::llabs(c.delta[1])),
       1);
@@ -58,7 +58,7 @@ uint64_t Adapter::work(const Command& c, const CoreLimits&) {
 // Positions stay inside a window well within POS_W; long lines reach the
 // delta width where the window allows it (the narrow variants), else a few
 // thousand steps (a full 32-bit line would run for hours).
-Adapter::Command Adapter::random_command(Rng& rng, const CoreLimits& l,
+Adapter::Command Adapter::random_command(Rng& rng, const VariantSpec& l,
                                          const models::LatticePoint& at, const Command& previous) {
   const int64_t pos_room = l.pos_w >= 20 ? 100000 : (int64_t{1} << (l.pos_w - 1)) - 1;
   const int64_t max_delta = (int64_t{1} << (l.param("ACC_W") - 1)) - 1;
@@ -96,14 +96,14 @@ Adapter::Command Adapter::random_command(Rng& rng, const CoreLimits& l,
   return c;
 }
 
-std::vector<Case<Adapter>> Adapter::paper_lines(const CoreLimits& l,
+std::vector<Case<Adapter>> Adapter::paper_lines(const VariantSpec& l,
                                                 const RunSettings<Adapter>& settings) {
   std::vector<Case<Adapter>> cases = paper_lines_004(l, settings);
   cases.push_back(delta_line_case(l, "003_line", {0, 0}, {4, 3}, settings));
   return cases;
 }
 
-std::vector<Case<Adapter>> Adapter::regression_cases(const CoreLimits& l, uint64_t commands,
+std::vector<Case<Adapter>> Adapter::regression_cases(const VariantSpec& l, uint64_t commands,
                                                      uint64_t seed) {
   std::vector<Case<Adapter>> cases = paper_lines(l, default_settings<Adapter>(l));
   append_random_streams(cases, l, commands, seed);
@@ -117,7 +117,7 @@ void Adapter::declare_options(cli::Args& args) {
             "each");
 }
 
-std::vector<Case<Adapter>> Adapter::cases_from_options(const cli::Args& args, const CoreLimits& l,
+std::vector<Case<Adapter>> Adapter::cases_from_options(const cli::Args& args, const VariantSpec& l,
                                                        const RunSettings<Adapter>& settings) {
   if (args.given("paper-lines")) return paper_lines(l, settings);
   return {delta_line_from_option(args, l, settings)};

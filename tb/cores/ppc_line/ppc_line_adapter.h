@@ -15,7 +15,8 @@
 
 #include "hls/ppc_line.h"
 #include "models/ppc.h"
-#include "tb/cli/cli_args.h"
+#include "tb/base/args.h"
+#include "tb/base/variant_spec.h"
 #include "tb/cores/delta_payload.h"
 #include "tb/scoreboard/move.h"
 #include "tb/stimulus/case.h"
@@ -37,7 +38,7 @@ struct Adapter : DeltaPayload<Adapter> {
   class Reference : public IdealLine {
    public:
     Reference(const models::LatticePoint& start, const Command& c, const Setup& s,
-              const CoreLimits& l);
+              const VariantSpec& l);
     bool next(Move& m);
     models::ErrorBound bound() const { return bound_; }
 
@@ -47,26 +48,26 @@ struct Adapter : DeltaPayload<Adapter> {
     models::StepMove move_;  // scratch, kept: a move allocates nothing
   };
   // |dx| + |dy| operations; a zero-length command takes one.
-  static uint64_t work(const Command& c, const CoreLimits&);
+  static uint64_t work(const Command& c, const VariantSpec&);
 
   // --- stimulus ---------------------------------------------------------------
   // Every octant, axis-parallel and vertical lines, zero-length commands,
   // reversals, and long lines up to the widths.
-  static Command random_command(Rng& rng, const CoreLimits& l, const models::LatticePoint& at,
+  static Command random_command(Rng& rng, const VariantSpec& l, const models::LatticePoint& at,
                                 const Command& previous);
   // The eight test lines of 004_dc68f1177cad466f.txt (004_line1..8) and the
   // line (0,0)->(4,3) of 003_b291717b57510359.txt (003_line).
-  static std::vector<Case<Adapter>> paper_lines(const CoreLimits& l,
+  static std::vector<Case<Adapter>> paper_lines(const VariantSpec& l,
                                                 const RunSettings<Adapter>& settings);
   // The main regression: the paper lines, a seeded random stream, and
   // (`commands` > 0) a random stream with aborts and feed holds.
-  static std::vector<Case<Adapter>> regression_cases(const CoreLimits& l, uint64_t commands,
+  static std::vector<Case<Adapter>> regression_cases(const VariantSpec& l, uint64_t commands,
                                                      uint64_t seed);
 
   // --- command line (hwinterp cosim --core ppc_line) -------------------------
   static void declare_options(cli::Args& args);
   static std::vector<std::string> sources() { return {"line", "paper-lines"}; }
-  static std::vector<Case<Adapter>> cases_from_options(const cli::Args& args, const CoreLimits& l,
+  static std::vector<Case<Adapter>> cases_from_options(const cli::Args& args, const VariantSpec& l,
                                                        const RunSettings<Adapter>& settings);
 };
 

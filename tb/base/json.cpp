@@ -1,4 +1,4 @@
-#include "tb/report/json.h"
+#include "tb/base/json.h"
 
 #include <fstream>
 #include <stdexcept>

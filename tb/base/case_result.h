@@ -1,6 +1,6 @@
 // What one co-simulated case produced: the lockstep comparison, the timing
 // monitors, the scoreboard and any aborts, in the shape of the `hwinterp
-// cosim --json` contract (DESIGN.md). Shared by every core's testbench.
+// cosim --json` contract (docs/verification.md). Shared by every core's testbench.
 #pragma once
 
 #include <cstdint>
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "models/lattice_path.h"
-#include "tb/report/json.h"
+#include "tb/base/json.h"
 
 namespace hwinterp::tb {
 
@@ -19,6 +19,9 @@ struct Mismatch {
   std::string signal;  // e.g. "pos_o[1]"
   uint64_t hls;
   uint64_t rtl;
+  // The inputs both took at that edge, by port name (signed payload fields
+  // as numbers; a port of several elements as a list).
+  Json inputs = Json::object();
 };
 
 Json to_json(const Mismatch& m);

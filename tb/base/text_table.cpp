@@ -1,4 +1,4 @@
-#include "tb/cli/text_table.h"
+#include "tb/base/text_table.h"
 
 #include <algorithm>
 #include <cctype>

@@ -1,9 +1,13 @@
-#include "tb/report/cosim_result.h"
+#include "tb/base/case_result.h"
 
 namespace hwinterp::tb {
 
 Json to_json(const Mismatch& m) {
-  return {{"cycle", m.cycle}, {"signal", m.signal}, {"hls", m.hls}, {"rtl", m.rtl}};
+  return {{"cycle", m.cycle},
+          {"signal", m.signal},
+          {"hls", m.hls},
+          {"rtl", m.rtl},
+          {"inputs", m.inputs}};
 }
 
 Json to_json(const AbortRecord& a) {

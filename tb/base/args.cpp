@@ -1,4 +1,4 @@
-#include "tb/cli/cli_args.h"
+#include "tb/base/args.h"
 
 #include <cerrno>
 #include <cmath>

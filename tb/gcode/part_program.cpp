@@ -1,0 +1,353 @@
+#include "tb/gcode/part_program.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <deque>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <optional>
+
+#include "tb/base/text_table.h"
+#include "tb/cores/motion_top/motion_top_adapter.h"
+#include "tb/gcode/contour.h"
+#include "tb/lockstep/bench_run.h"
+#include "tb/report/cosim_report.h"
+
+namespace hwinterp::gcode {
+
+namespace {
+
+using MotionAdapter = tb::cores::motion_top::Adapter;
+
+constexpr const char* kAxisName[] = {"x", "y", "z", "a", "b", "c"};
+
+// One command on its way to the core, and the move it belongs to.
+struct Pending {
+  uint64_t command = 0;  // 0-based, as the scoreboard counts
+  uint64_t move = 0;     // MoveReport::index
+  uint64_t line = 0;     // the move's source line
+  std::shared_ptr<const ContourPath> path;
+};
+
+// Streams the compiler's commands into the bench, and follows the moves the
+// core makes: contour error per visited point, the lattice point each
+// G-code move ends on, the moves CSV.
+class Program final : public tb::ItemSource<MotionAdapter>, public tb::MoveObserver {
+ public:
+  Program(std::unique_ptr<MoveSource> source, const Machine& machine, const MotionWidths& widths,
+          FeedMode mode, const std::string& name, std::ostream* moves_csv, std::ostream* points_csv)
+      : source_(std::move(source)),
+        machine_(machine),
+        compiler_(*source_, machine, widths, mode, name,
+                  [this](const MoveReport& r) { reports_.push_back(r); }),
+        axes_(widths.axes),
+        moves_csv_(moves_csv),
+        points_csv_(points_csv),
+        last_reached_(static_cast<size_t>(widths.axes), 0) {
+    if (moves_csv_) {
+      *moves_csv_ << "move,line,kind,x_mm,y_mm,z_mm,a_deg";
+      for (int i = 0; i < axes_; ++i) *moves_csv_ << ',' << kAxisName[i] << "_steps";
+      *moves_csv_ << ",commands,chords,programmed_s,feed_words_s,max_contour_mm\n";
+    }
+    if (points_csv_) *points_csv_ << "move,x_mm,y_mm,z_mm,error_mm\n";
+  }
+
+  // tb::ItemSource: the next command of the program.
+  bool next(tb::Item<MotionAdapter>& it) override {
+    models::MotionCommand c;
+    if (!compiler_.next(c)) {
+      flush_rows();
+      return false;
+    }
+    const CommandInfo& info = compiler_.info();
+    if (!path_ || path_move_ != info.move_index) {
+      path_ = std::make_shared<ContourPath>(machine_, compiler_.move_start(), compiler_.move());
+      path_move_ = info.move_index;
+    }
+    pending_.push_back({commands_++, info.move_index, info.line, path_});
+    it = tb::command_item<MotionAdapter>(c);
+    flush_rows();
+    return true;
+  }
+
+  // tb::MoveObserver: a move of command `command`.
+  void move(const models::LatticePoint& at, uint64_t command) override {
+    const Pending* p = find(command);
+    if (!p) return;
+    const ContourError e = p->path->error(lattice6(at));
+    move_max_[p->move] = std::max(move_max_[p->move], e.mm);
+    if (e.mm > max_.mm) {
+      max_.mm = e.mm;
+      max_.steps = e.steps;
+      max_.move = p->move;
+      max_.line = p->line;
+    }
+    if (points_csv_) {
+      *points_csv_ << p->move;
+      for (int i = 0; i < 3; ++i)
+        *points_csv_ << ','
+                     << (i < axes_ ? static_cast<double>(at[static_cast<size_t>(i)]) /
+                                         static_cast<double>(machine_.steps_per_unit[i])
+                                   : 0.0);
+      *points_csv_ << ',' << e.mm << '\n';
+    }
+    ++points_;
+  }
+
+  // tb::MoveObserver: command `command` completed at `at`.
+  void done(uint64_t command, const models::LatticePoint& at) override {
+    while (!pending_.empty() && pending_.front().command < command) pending_.pop_front();
+    if (!pending_.empty() && pending_.front().command == command) {
+      reached_[pending_.front().move] = at;
+      last_reached_ = at;
+      pending_.pop_front();
+    }
+    flush_rows();
+  }
+
+  const MotionCompiler& compiler() const { return compiler_; }
+  const ReaderStats& reader_stats() const { return source_->stats(); }
+  const ContourMax& max() const { return max_; }
+  uint64_t points() const { return points_; }
+
+  // The rows of every reported move whose last command the core completed.
+  void flush_rows() {
+    while (!reports_.empty()) {
+      const MoveReport& r = reports_.front();
+      std::optional<models::LatticePoint> at;  // where the move ended, once known
+      if (r.commands == 0) {
+        at = last_reached_;
+      } else if (auto f = reached_.find(r.index); f != reached_.end() && !still_pending(r.index)) {
+        at = f->second;
+      }
+      if (!at) return;
+      if (moves_csv_) {
+        *moves_csv_ << r.index << ',' << r.line << ',' << to_string(r.kind);
+        for (int i = 0; i < 4; ++i) *moves_csv_ << ',' << r.end[static_cast<size_t>(i)];
+        for (int i = 0; i < axes_; ++i)
+          *moves_csv_ << ',' << (at->empty() ? 0 : (*at)[static_cast<size_t>(i)]);
+        *moves_csv_ << ',' << r.commands << ',' << r.chords << ',' << r.programmed_s << ','
+                    << r.programmed_words_s << ',' << move_max_[r.index] << '\n';
+      }
+      if (!at->empty()) {
+        for (int i = 0; i < axes_; ++i)
+          if ((*at)[static_cast<size_t>(i)] != r.end_steps[static_cast<size_t>(i)])
+            end_mismatches_.push_back(r.index);
+      }
+      reached_.erase(r.index);
+      move_max_.erase(r.index);
+      reports_.pop_front();
+    }
+  }
+  const std::vector<uint64_t>& end_mismatches() const { return end_mismatches_; }
+  bool all_rows_written() const { return reports_.empty(); }
+
+ private:
+  static std::array<int64_t, 6> lattice6(const models::LatticePoint& at) {
+    std::array<int64_t, 6> a{};
+    for (size_t i = 0; i < at.size() && i < a.size(); ++i) a[i] = at[i];
+    return a;
+  }
+  const Pending* find(uint64_t command) const {
+    for (const Pending& p : pending_)
+      if (p.command == command) return &p;
+    return nullptr;
+  }
+  bool still_pending(uint64_t move) const {
+    return std::any_of(pending_.begin(), pending_.end(),
+                       [&](const Pending& p) { return p.move == move; });
+  }
+
+  std::unique_ptr<MoveSource> source_;
+  Machine machine_;
+  MotionCompiler compiler_;
+  int axes_;
+  std::ostream* moves_csv_;
+  std::ostream* points_csv_;
+  std::deque<Pending> pending_;                       // commands made and not yet completed
+  std::deque<MoveReport> reports_;                    // moves compiled, rows not yet written
+  std::map<uint64_t, models::LatticePoint> reached_;  // move -> where its last command ended
+  std::map<uint64_t, double> move_max_;               // move -> its worst contour error
+  models::LatticePoint last_reached_;  // where the last completed command ended (the origin first)
+  std::shared_ptr<const ContourPath> path_;
+  uint64_t path_move_ = 0;
+  uint64_t commands_ = 0, points_ = 0;
+  ContourMax max_;
+  std::vector<uint64_t> end_mismatches_;
+};
+
+// This process's peak resident memory in KiB (VmHWM: since exec, so not the
+// parent's), 0 where /proc does not say.
+uint64_t peak_rss_kib() {
+  std::ifstream in("/proc/self/status");
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("VmHWM:", 0) == 0) return std::strtoull(line.c_str() + 6, nullptr, 10);
+  return 0;
+}
+
+int machine_axes(const Machine& m) {
+  int axes = 0;
+  for (int i = 0; i < 6; ++i)
+    if (m.has_axis[i]) axes = i + 1;
+  return axes;
+}
+
+// The motion_top variants and the one the setup picks.
+struct Chosen {
+  std::vector<tb::TypedVariant<MotionAdapter>> all;
+  size_t index = 0;
+  const tb::TypedVariant<MotionAdapter>& variant() const { return all[index]; }
+};
+
+Chosen choose(const PartProgramSetup& setup) {
+  Chosen c;
+  c.all = tb::typed_variants<MotionAdapter>();
+  std::vector<tb::VariantSpec> specs;
+  for (const auto& v : c.all) specs.push_back(v.spec);
+  const int axes = machine_axes(setup.machine);
+  c.index = tb::choose_variant(MotionAdapter::kName, specs, {setup.variant, axes, true});
+  const tb::VariantSpec& l = c.variant().spec;
+  if (l.axes < axes)
+    throw cli::UsageError("--variant: " + l.variant + " has " + std::to_string(l.axes) +
+                          " axes, the machine " + std::to_string(axes));
+  return c;
+}
+
+}  // namespace
+
+tb::VariantSpec part_program_variant(const PartProgramSetup& setup) {
+  return choose(setup).variant().spec;
+}
+
+PartProgramRun run_part_program(const PartProgramSetup& setup) {
+  const Chosen chosen = choose(setup);
+  const tb::VariantSpec& l = chosen.variant().spec;
+  MotionWidths widths;
+  widths.axes = l.axes;
+  widths.acc_w = l.param("ACC_W");
+  widths.coord_w = l.param("COORD_W");
+  widths.ops_w = l.param("OPS_W");
+  widths.feed_w = l.feed_w;
+
+  auto source = setup.canon ? open_canon(setup.program) : open_ngc(setup.program);
+  auto prog = std::make_shared<Program>(std::move(source), setup.machine, widths, setup.feed_mode,
+                                        setup.program, setup.moves_csv, setup.points_csv);
+
+  // One case from the origin, the machine's step/dir timing, feed_i running.
+  tb::Case<MotionAdapter> c;
+  c.name = setup.program;
+  c.start.assign(static_cast<size_t>(l.axes), 0);
+  c.settings = tb::default_settings<MotionAdapter>(l);
+  c.settings.feed = l.full_feed();
+  const StepTiming& t = setup.machine.timing;
+  c.settings.timing = {static_cast<uint32_t>(t.step_len), static_cast<uint32_t>(t.step_space),
+                       static_cast<uint32_t>(t.dir_setup), static_cast<uint32_t>(t.dir_hold)};
+  c.more = prog;
+
+  tb::BenchOptions options = setup.bench;
+  options.mode = setup.mode;
+  options.observer = prog.get();
+  std::vector<tb::Case<MotionAdapter>> cases;
+  cases.push_back(std::move(c));
+  const std::unique_ptr<tb::BenchRun> run = chosen.variant().make(l, std::move(cases), options);
+
+  std::cout << "hwinterp gcode: " << setup.program << (setup.canon ? " (canon)" : "") << " on "
+            << l.variant << ", mode " << setup.mode << ", feed "
+            << (setup.feed_mode == FeedMode::kFull ? "full" : "programmed") << "\n"
+            << std::flush;
+  if (setup.mode == "direct")
+    run->run_direct();
+  else
+    tb::run_systemc({run.get()});
+  run->close();
+  prog->flush_rows();
+
+  PartProgramRun r;
+  r.variant = l;
+  r.results = run->results();
+  r.totals = prog->compiler().totals();
+  r.reader = prog->reader_stats();
+  r.contour = prog->max();
+  r.visited_points = prog->points();
+  r.end_mismatches = prog->end_mismatches();
+  r.all_rows_written = prog->all_rows_written();
+  r.passed = tb::all_passed(r.results) && !r.results.empty() && r.results.front().completed &&
+             r.end_mismatches.empty() && r.all_rows_written;
+  return r;
+}
+
+std::string summary_table(const PartProgramSetup& setup, const PartProgramRun& run) {
+  const tb::CaseResult& r = run.results.front();
+  const CompileTotals& t = run.totals;
+  const ReaderStats& rs = run.reader;
+  const double clock = static_cast<double>(setup.machine.clock_hz);
+  const ContourMax& m = run.contour;
+  TextTable s({"", "value"});
+  s.add_row({"moves (traverse / feed / arc)",
+             std::to_string(t.moves) + " (" + std::to_string(rs.traverses) + " / " +
+                 std::to_string(rs.feeds) + " / " + std::to_string(rs.arcs) + ")"});
+  s.add_row({"commands (lines / arcs)", std::to_string(t.commands) + " (" +
+                                            std::to_string(t.line_commands) + " / " +
+                                            std::to_string(t.arc_commands) + ")"});
+  s.add_row({"arcs run as chords / split arcs",
+             std::to_string(t.chord_arcs) + " / " + std::to_string(t.split_arcs)});
+  std::string steps;
+  for (int i = 0; i < run.variant.axes; ++i)
+    steps += (i ? " " : "") + std::string(kAxisName[i]) + "=" +
+             std::to_string(r.steps[static_cast<size_t>(i)]);
+  s.add_row({"steps per axis", steps});
+  s.add_row({"programmed machining time (F, rapids)", fmt("%.3f", t.programmed_s) + " s"});
+  s.add_row({"machining time from the feed words", fmt("%.3f", t.programmed_words_s) + " s"});
+  s.add_row({std::string("simulated (") +
+                 (setup.feed_mode == FeedMode::kFull ? "full" : "programmed") + " feed, " +
+                 fmt("%.3f", clock / 1e6) + " MHz)",
+             std::to_string(r.cycles) +
+                 " clocks = " + fmt("%.6f", static_cast<double>(r.cycles) / clock) + " s"});
+  s.add_row({"max contour error", fmt("%.6f", m.mm) + " mm = " + fmt("%.3f", m.steps) +
+                                      " steps (move " + std::to_string(m.move) + ", line " +
+                                      std::to_string(m.line) + ")"});
+  s.add_row({"visited lattice points", std::to_string(run.visited_points)});
+  return s.render();
+}
+
+Json report_json(const PartProgramSetup& setup, const PartProgramRun& run) {
+  const tb::CaseResult& r = run.results.front();
+  const CompileTotals& t = run.totals;
+  const ReaderStats& rs = run.reader;
+  const ContourMax& m = run.contour;
+  Json report = tb::aggregate_json(run.results);
+  report["program"] = setup.program;
+  report["canon"] = setup.canon;
+  report["variant"] = run.variant.variant;
+  report["feed_mode"] = setup.feed_mode == FeedMode::kFull ? "full" : "programmed";
+  report["moves"] = t.moves;
+  report["traverses"] = rs.traverses;
+  report["feeds"] = rs.feeds;
+  report["arcs"] = rs.arcs;
+  report["commands"] = t.commands;
+  report["line_commands"] = t.line_commands;
+  report["arc_commands"] = t.arc_commands;
+  report["chord_arcs"] = t.chord_arcs;
+  report["chords"] = t.chords;
+  report["split_arcs"] = t.split_arcs;
+  report["programmed_time_s"] = t.programmed_s;
+  report["feed_word_time_s"] = t.programmed_words_s;
+  report["simulated_clocks"] = r.cycles;
+  report["simulated_time_s"] =
+      static_cast<double>(r.cycles) / static_cast<double>(setup.machine.clock_hz);
+  report["clock_hz"] = setup.machine.clock_hz;
+  report["max_contour_error_mm"] = m.mm;
+  report["max_contour_error_steps"] = m.steps;
+  report["max_contour_error_move"] = m.move;
+  report["max_contour_error_line"] = m.line;
+  report["visited_points"] = run.visited_points;
+  report["end_mismatches"] = run.end_mismatches.size();
+  report["peak_rss_kib"] = peak_rss_kib();
+  return report;
+}
+
+}  // namespace hwinterp::gcode

@@ -1,0 +1,80 @@
+// A part program through motion_top in lockstep: `hwinterp gcode`'s run.
+// The program (an RS274/NGC subset, tb/gcode/ngc_reader.h, or LinuxCNC's
+// `rs274 -g` canonical commands, tb/gcode/canon_reader.h) is compiled move by
+// move into motion_top commands (tb/gcode/motion_compiler.h: lattice points
+// rounded from absolute coordinates, arcs on the arc engine, feed words) and
+// streamed into the lockstep bench: the HLS core against the RTL on every
+// clock, both against the reference model (every move, every end point,
+// every visited point within its bound), the step/dir timing on every axis.
+// On top, every visited lattice point is measured against the programmed
+// path of its move (tb/gcode/contour.h): the contour error; and every move
+// must end on its rounded programmed end. Memory does not grow with the
+// program: moves, commands and checks stream.
+//
+// This part needs the lockstep harness, so it is built into the testbench
+// library, not into the plain hwinterp_gcode library (readers, machine file,
+// compiler: no SystemC, no Verilator) that the fuzzers use.
+#pragma once
+
+#include <cstdint>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "tb/base/case_result.h"
+#include "tb/base/json.h"
+#include "tb/base/variant_spec.h"
+#include "tb/gcode/machine.h"
+#include "tb/gcode/motion_compiler.h"
+#include "tb/gcode/program_file.h"
+#include "tb/lockstep/bench_options.h"
+
+namespace hwinterp::gcode {
+
+// What to run.
+struct PartProgramSetup {
+  std::string program;  // the file
+  bool canon = false;   // LinuxCNC canonical commands, not RS274/NGC
+  Machine machine;
+  std::string variant;  // a motion_top variant; empty: the first with the machine's axes
+  FeedMode feed_mode = FeedMode::kFull;
+  std::string mode = "systemc";        // lockstep mode: systemc or direct
+  tb::BenchOptions bench;              // traces, progress (mode and observer are set by the run)
+  std::ostream* moves_csv = nullptr;   // one row per motion move; null: none
+  std::ostream* points_csv = nullptr;  // one row per visited point (the plot's); null: none
+};
+
+// The worst contour error, and where.
+struct ContourMax {
+  double mm = 0, steps = 0;
+  uint64_t move = 0, line = 0;
+};
+
+// What the run gave.
+struct PartProgramRun {
+  tb::VariantSpec variant;
+  std::vector<tb::CaseResult> results;  // the one case
+  CompileTotals totals;
+  ReaderStats reader;
+  ContourMax contour;
+  uint64_t visited_points = 0;
+  std::vector<uint64_t> end_mismatches;  // moves that ended off their rounded programmed end
+  bool all_rows_written = false;         // every move reached the moves CSV
+  bool passed = false;                   // lockstep, model, timing, end points: everything held
+};
+
+// The variant it will run on (named, or the first with the machine's axes);
+// throws cli::UsageError listing the variants.
+tb::VariantSpec part_program_variant(const PartProgramSetup& setup);
+
+// Compiles and runs the program; bad input (the program, the variant)
+// throws cli::UsageError before anything is simulated.
+PartProgramRun run_part_program(const PartProgramSetup& setup);
+
+// The run's summary table (moves, commands, steps, times, contour error) and
+// its report keys (the `hwinterp gcode --json` contract, without the
+// command's own keys).
+std::string summary_table(const PartProgramSetup& setup, const PartProgramRun& run);
+Json report_json(const PartProgramSetup& setup, const PartProgramRun& run);
+
+}  // namespace hwinterp::gcode
