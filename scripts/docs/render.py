@@ -30,6 +30,15 @@ imported figure), so a later run can refresh it.
                    gcode      build/reports/gcode/*.json: hwinterp gcode
                               tests/data/gcode/<program>.ngc --mode direct --json FILE,
                               one FILE per committed program (several FILEs)
+                   back_to_back  hwinterp cosim --core C --job
+                              docs/data/back_to_back.job --mode direct --json FILE,
+                              for fixed_ratio, dda_line, ppc_line (three FILEs)
+                   log_stepper   hwinterp cosim --core log_stepper --paper-log
+                              [--mode direct] --json FILE (per mode), and --variant V
+                              --random 3000 --seed 7 --mode direct --json FILE per
+                              variant (--seconds T1,T2: their wall times; --load L)
+                   planner    build/tests/bench_planner --benchmark_format=json
+                              --benchmark_out=FILE
                  Other data files are measured by the command they name and
                  edited by hand (or imported from the commit that stated them).
 
@@ -253,14 +262,16 @@ def r_log_paper(_):
                                             lastx["ours"], lastx["paper"]), "",
             "`%s` runs it in %s clocks at full feed with the default timing, path error %s steps "
             "(the 4-axis DDA bound with half preload is 1), ErPA of the lattice path %.3g rad, "
-            "in both lockstep modes." % (p["command"], grp(p["cycles"]), f4(p["max_path_error_steps"]),
-                                         p["max_erpa_rad"]), "", source(d) + " " + source(L)]
+            "%s." % (p["command"], grp(p["cycles"]), f4(p["max_path_error_steps"]), p["max_erpa_rad"],
+                     "in both lockstep modes" if len(p["modes"]) == 2 else
+                     "in the %s mode" % p["modes"][0]), "", source(d) + " " + source(L)]
 
 
 def r_log_random(_):
     L = load("log_stepper.json")
     rows = [["`%s`" % r["variant"], grp(r["points"]), grp(r["cycles"]), r["max_point_error_steps"],
-             f4(r["max_path_error_steps"]), "%.1f s" % r["seconds"]] for r in L["random"]]
+             f4(r["max_path_error_steps"]),
+             "%.1f s" % r["seconds"] if r.get("seconds") is not None else "-"] for r in L["random"]]
     return ["Random curves, `%s` per variant:" % L["random_command"], ""] + table(
         ["variant", "points", "clocks", "worst point error (steps)", "path error (steps)", "wall"],
         rows) + ["", source(L)]
@@ -575,8 +586,10 @@ def read_json(path):
         fail("cannot read %s: %s" % (path, e))
 
 
-def stamp(command, extra):
+def stamp(command, extra, opts):
     d = {"command": command, "date": datetime.date.today().isoformat(), "commit": git_head()}
+    if opts.get("load"):
+        d["machine"] = "2 cores shared with other jobs, load average %s" % opts["load"]
     d.update(extra)
     return d
 
@@ -603,9 +616,7 @@ def import_regress(files, opts):
     }
     if opts.get("seconds"):
         extra["wall_seconds"] = float(opts["seconds"])
-    extra["machine"] = "2 cores shared with other jobs" + (
-        ", load average %s" % opts["load"] if opts.get("load") else "")
-    return stamp("scripts/regress.sh", extra)
+    return stamp("scripts/regress.sh", extra, opts)
 
 
 def import_reproduce(files, opts):
@@ -624,7 +635,7 @@ def import_reproduce(files, opts):
         papers.append(q)
     return stamp("hwinterp reproduce --json FILE", {
         "what": "hwinterp reproduce: every paper's figures beside ours (the full tables are in the "
-                "command's own output)", "ok": r["ok"], "papers": papers})
+                "command's own output)", "ok": r["ok"], "papers": papers}, opts)
 
 
 def import_gcode(files, opts):
@@ -651,10 +662,83 @@ def import_gcode(files, opts):
             fail("%s: not a hwinterp gcode report (no %s)" % (path, e))
     return stamp("hwinterp gcode tests/data/gcode/<program>.ngc --mode direct --json FILE", {
         "what": "the committed programs on the default machine (tests/data/gcode/"
-                "machine_default.json), full feed", "programs": progs})
+                "machine_default.json), full feed", "programs": progs}, opts)
 
 
-IMPORTS = {"regress": import_regress, "reproduce": import_reproduce, "gcode": import_gcode}
+def import_back_to_back(files, opts):
+    runs = []
+    for path in files:
+        r = read_json(path)
+        if "cycles" not in r or "variant" not in r:
+            fail("%s is not a hwinterp cosim report" % path)
+        runs.append({"core": r["core"], "variant": r["variant"], "cycles": r["cycles"],
+                     "commands": r["commands"], "passed": r["passed"]})
+    return stamp("hwinterp cosim --core C --job docs/data/back_to_back.job --mode direct --json FILE", {
+        "what": "short commands back to back: 200 one-step diagonal lines (move 1 1) at full feed "
+                "with 1-clock timing, clocks from reset to the end of the case, per command",
+        "runs": runs}, opts)
+
+
+def import_log_stepper(files, opts):
+    """Reports of the paper's curve (cosim --paper-log: case 001_log, one per lockstep mode) and
+    of random runs (the others, in order); --seconds T1,T2,...: the random runs' wall times."""
+    paper, rand = [], []
+    for path in files:
+        r = read_json(path)
+        if r.get("core") != "log_stepper" or "points" not in r:
+            fail("%s is not a hwinterp cosim report of log_stepper" % path)
+        (paper if [c.get("case") for c in r.get("cases", [])] == ["001_log"] else rand).append(r)
+    if not paper or not rand:
+        fail("--import log_stepper takes the --paper-log reports and the random runs' reports")
+    for q in paper[1:]:
+        if (q["cycles"], q["max_path_error_steps"]) != (paper[0]["cycles"],
+                                                        paper[0]["max_path_error_steps"]):
+            fail("the --paper-log reports differ between modes")
+    secs = [float(x) for x in opts["seconds"].split(",")] if opts.get("seconds") else []
+    if secs and len(secs) != len(rand):
+        fail("--seconds needs one wall time per random run")
+    p = paper[0]
+    random = [{"variant": r["variant"], "points": r["points"], "cycles": r["cycles"],
+               "max_point_error_steps": int(r["max_point_error_steps"]),
+               "max_path_error_steps": r["max_path_error_steps"],
+               "seconds": secs[i] if secs else None, "passed": r["passed"]}
+              for i, r in enumerate(rand)]
+    extra = {
+        "what": "log_stepper in lockstep: the paper's curve (paper 001, dl = 0.2 mm, 1000 steps/mm "
+                "and /deg) at full feed with the default timing; random curves per variant",
+        "paper_curve": {"command": "hwinterp cosim --core log_stepper --paper-log",
+                        "variant": p["variant"], "modes": [q["mode"] for q in paper],
+                        "cycles": p["cycles"], "points": p["points"],
+                        "max_point_error_steps": p["max_point_error_steps"],
+                        "max_path_error_steps": p["max_path_error_steps"],
+                        "max_erpa_rad": p["max_erpa_rad"], "passed": all(q["passed"] for q in paper)},
+        "random_command": "hwinterp cosim --core log_stepper --variant V --random 3000 --seed 7 "
+                          "--mode direct",
+        "random": random}
+    return stamp("hwinterp cosim --core log_stepper --paper-log [--mode direct] --json FILE; "
+                 "hwinterp cosim --core log_stepper --variant V --random 3000 --seed 7 --mode "
+                 "direct --json FILE", extra, opts)
+
+
+def import_planner(files, opts):
+    if len(files) != 1:
+        fail("--import planner takes one bench_planner --benchmark_format=json output")
+    r = read_json(files[0])
+    cases = [{"case": b["name"], "ms": round(b["cpu_time"], 3), "segments": int(b["segments"])}
+             for b in r.get("benchmarks", []) if b["name"].startswith("Plan/")]
+    if not cases:
+        fail("%s has no Plan/ benchmarks" % files[0])
+    return stamp("build/tests/bench_planner --benchmark_format=json", {
+        "what": "the optimal-linear-interpolation planner (paper 000) on every case of the "
+                "paper's Table 1 (Cam 1) and Table 3 (Cam 2): CPU time per plan",
+        "cases": cases}, opts)
+
+
+IMPORTS = {"regress": import_regress, "reproduce": import_reproduce, "gcode": import_gcode,
+           "back_to_back": import_back_to_back, "log_stepper": import_log_stepper,
+           "planner": import_planner}
+# The data file each import writes.
+IMPORT_FILES = {"gcode": "gcode_programs.json", "planner": "planner_bench.json"}
 
 
 # ---------------------------------------------------------------- main
@@ -691,7 +775,7 @@ def main(argv):
         if not files:
             fail("--import %s needs a FILE" % kind)
         d = IMPORTS[kind](files, opts)
-        path = os.path.join(DATA, kind + ("_programs" if kind == "gcode" else "") + ".json")
+        path = os.path.join(DATA, IMPORT_FILES.get(kind, kind + ".json"))
         with open(path, "w") as f:
             json.dump(d, f, indent=1)
             f.write("\n")
