@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Publishes synthesis results: docs/synth.json and README's synthesis table.
+"""Publishes synthesis results: docs/synth.json, the synthesis table of
+docs/synthesis.md and the synth-columns blocks of README.md and docs/**/*.md.
 
 Usage: publish.py [--check] [--variants FILE] [SYNTH_JSON...]
 
@@ -9,20 +10,21 @@ Usage: publish.py [--check] [--variants FILE] [SYNTH_JSON...]
                 are refused: the table needs the iCE40 figures.
   --variants F  the build's generated/variants.txt: every variant it lists must
                 be published, and no other (checked with --check)
-  --check       write nothing; exit 1 if README's table is not what docs/synth.json
+  --check       write nothing; exit 1 if a table or block is not what docs/synth.json
                 renders, if a published variant was measured on RTL other than
                 today's rtl/<core>.f files (rtl_sha256), or if a variant is missing
 
-Without --check (and after merging), README.md's text between the two
+Without --check (and after merging), docs/synthesis.md's text between the two
 `synth-table` marker lines is rewritten from docs/synth.json, and so is each
-`synth-columns` block (a marker naming variants, e.g.
-`<!-- synth-columns: fixed_ratio_n2 dda_line_n2; written by ... -->`, up to
-`<!-- end synth-columns -->`: a small table with one column per named
-variant, for prose that compares cores): no synthesis figure in README.md is
-written by hand.
+`synth-columns` block in README.md and docs/**/*.md (a marker naming variants,
+e.g. `<!-- synth-columns: fixed_ratio_n2 dda_line_n2; written by ... -->`, up
+to `<!-- end synth-columns -->`: a small table with one column per named
+variant, for prose that compares cores): no synthesis figure in the
+documentation is written by hand.
 
 Exit status: 0 done / consistent, 1 inconsistent (names each variant), 2 bad input.
 """
+import glob
 import json
 import os
 import re
@@ -32,7 +34,13 @@ sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from synth_report import ROOT, rtl_digest  # noqa: E402
 
 PUBLISHED = os.path.join(ROOT, "docs", "synth.json")
-README = os.path.join(ROOT, "README.md")
+# The page with the synthesis table, and every page that may hold synth-columns blocks.
+TABLE_DOC = os.path.join(ROOT, "docs", "synthesis.md")
+
+
+def column_docs():
+    return [os.path.join(ROOT, "README.md")] + sorted(
+        glob.glob(os.path.join(ROOT, "docs", "**", "*.md"), recursive=True))
 BEGIN = "<!-- synth-table: written by scripts/synth/publish.py from docs/synth.json; do not edit -->"
 END = "<!-- end synth-table -->"
 # <!-- synth-columns: V1 V2 ...; written by scripts/synth/publish.py from docs/synth.json; do not edit -->
@@ -140,7 +148,7 @@ def render_columns(names, by_name):
     """A synth-columns block: area and Fmax of the named variants, one column each."""
     missing = [v for v in names if v not in by_name]
     if missing:
-        fail("README.md's synth-columns block names unpublished variants: %s" % ", ".join(missing))
+        fail("a synth-columns block names unpublished variants: %s" % ", ".join(missing))
     rs = [by_name[v] for v in names]
     out = ["<!-- synth-columns: %s; written by scripts/synth/publish.py from docs/synth.json; "
            "do not edit -->" % " ".join(names), "",
@@ -162,11 +170,12 @@ def with_columns(text, by_name):
     return COLUMNS_RE.sub(lambda m: render_columns(m.group(1).split(), by_name), text)
 
 
-def readme_parts():
-    with open(README) as f:
+def table_parts():
+    with open(TABLE_DOC) as f:
         text = f.read()
     if text.count(BEGIN) != 1 or text.count(END) != 1 or text.index(BEGIN) > text.index(END):
-        fail("README.md needs exactly one pair of synth-table markers:\n  %s\n  %s" % (BEGIN, END))
+        fail("docs/synthesis.md needs exactly one pair of synth-table markers:\n  %s\n  %s"
+             % (BEGIN, END))
     head, rest = text.split(BEGIN, 1)
     body, tail = rest.split(END, 1)
     return head, BEGIN + body + END, tail
@@ -230,16 +239,23 @@ def main(argv):
                             "now %s): synthesize it again" % (r["variant"], r["core"],
                                                               (r.get("rtl_sha256") or "none")[:12],
                                                               now[:12]))
-    head, section, tail = readme_parts()
+    head, section, tail = table_parts()
     table = render(results) if results else BEGIN + "\n" + END
     by_variant = {r["variant"]: r for r in results}
+    others = [p for p in column_docs() if os.path.abspath(p) != os.path.abspath(TABLE_DOC)]
     if check:
         if section != table:
-            problems.append("README.md's synthesis table is not what docs/synth.json renders: "
-                            "run scripts/synth/publish.py")
-        if head + tail != with_columns(head, by_variant) + with_columns(tail, by_variant):
-            problems.append("a synth-columns block of README.md is not what docs/synth.json "
+            problems.append("docs/synthesis.md's synthesis table is not what docs/synth.json "
                             "renders: run scripts/synth/publish.py")
+        stale = [TABLE_DOC] if head + tail != with_columns(head, by_variant) + \
+            with_columns(tail, by_variant) else []
+        for path in others:
+            with open(path) as f:
+                text = f.read()
+            if text != with_columns(text, by_variant):
+                stale.append(path)
+        problems += ["a synth-columns block of %s is not what docs/synth.json renders: run "
+                     "scripts/synth/publish.py" % os.path.relpath(p, ROOT) for p in stale]
         for p in problems:
             sys.stderr.write("publish: %s\n" % p)
         return 1 if problems else 0
@@ -247,11 +263,19 @@ def main(argv):
         with open(PUBLISHED, "w") as f:
             json.dump({"variants": results}, f, indent=2)
             f.write("\n")
-    with open(README, "w") as f:
+    with open(TABLE_DOC, "w") as f:
         f.write(with_columns(head, by_variant) + table + with_columns(tail, by_variant))
+    for path in others:
+        with open(path) as f:
+            text = f.read()
+        new = with_columns(text, by_variant)
+        if new != text:
+            with open(path, "w") as f:
+                f.write(new)
     for p in problems:
         sys.stderr.write("publish: warning: %s\n" % p)
-    sys.stdout.write("publish: %d variants in docs/synth.json, README table written\n" % len(results))
+    sys.stdout.write("publish: %d variants in docs/synth.json, docs/synthesis.md's table and "
+                     "every synth-columns block written\n" % len(results))
     return 0
 
 
