@@ -1,5 +1,5 @@
-// The port contract every step-emitting core shares (DESIGN.md, "Anatomy of
-// a core"), as the plain structs the HLS cores' tick() takes and returns:
+// The port contract every step-emitting core shares (README, "The port
+// contract every core shares"), as the plain structs the HLS cores' tick() takes and returns:
 //   inputs  clk_i (the tick() call), rst_ni, cmd_valid_i, the core's own
 //           inputs (command payload and per-command settings), feed_i, the
 //           four step/dir timing settings, abort_i;

@@ -39,7 +39,7 @@ struct DividerPlan {
   std::array<int64_t, 2> half_period{};  // H_i in clocks (0 for an idle axis)
   std::array<double, 2> frequency_hz{};  // realised f_clk / (2 H_i)
   int64_t completion_clocks = 0;         // end of the last pulse period of the slower axis
-  double tick_clocks = 0;  // shortest pulse period of one axis (the tick of ACCEPTANCE 004)
+  double tick_clocks = 0;  // shortest pulse period of one axis (paper 004's tick)
 };
 
 // Divider settings for a line; throws std::invalid_argument when v or f_clk is

@@ -24,7 +24,7 @@ struct StepMove {
 struct StepPath {
   LatticePoint start, end;  // the commanded line (or arc) end points
   std::vector<StepMove> moves;
-  double ticks = 0;         // completion time (see ACCEPTANCE 004 for the tick of each method)
+  double ticks = 0;         // completion time (docs/papers.md, paper 004: the tick of each method)
   uint64_t operations = 0;  // interpolation computations the method needs
 
   // Pulses sent per axis (sum of |step|).

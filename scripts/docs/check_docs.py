@@ -34,26 +34,10 @@ import sys
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 MAX_README_LINES = 300
 
-# Citations of the specification in C++ comments, to be removed by the lead engineer
-# (tb/, hls/ and tests/*.cpp are being edited): path -> number of lines citing it.
-KNOWN = {
-    "hls/stepper_io.h": 1,
-    "models/cam_law.cpp": 1,
-    "models/fixed_ratio.h": 1,
-    "models/step_path.h": 1,
-    "tb/cli/cli_args.h": 1,
-    "tb/report/cosim_result.h": 1,
-    "tb/reproduce/reproduce_chord.cpp": 1,
-    "tb/reproduce/reproduce_oli.cpp": 1,
-    "tb/reproduce/reproduce_ratio.cpp": 3,
-    "tests/models/fine_lines_test.cpp": 4,
-    "tests/models/optimal_linear_test.cpp": 1,
-    "tests/tb/cosim_cli_test.cpp": 1,
-    "tests/tb/log_cli_test.cpp": 1,
-}
-# Files exempt: this checker, and docs/data/reproduce.json (a copy of hwinterp reproduce's
-# output, whose row labels come from tb/reproduce/).
-EXEMPT = {"scripts/docs/check_docs.py", "docs/data/reproduce.json"}
+# Citations of the specification allowed, path -> number of lines citing it (none).
+KNOWN = {}
+# Files exempt: this checker.
+EXEMPT = {"scripts/docs/check_docs.py"}
 # DESIGN.md, ACCEPTANCE.md, or the bare name ("ACCEPTANCE 004", "ACCEPTANCE's bound").
 SPEC = re.compile(r"(\S*?)\b(DESIGN|ACCEPTANCE)\b(\.md)?")
 PAPER_FILE = re.compile(r"\b\d{3}_[0-9a-f]{16}\.txt")

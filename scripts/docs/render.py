@@ -485,7 +485,21 @@ def r_synth_paths(_):
     return table(["variant", "seed", "HX8K Fmax (MHz)", "critical path: from -> to"], rows)
 
 
+def r_folder_graph(_):
+    """tb/'s folder graph from its includes (scripts/folder_graph.py)."""
+    sys.path.insert(0, os.path.join(ROOT, "scripts"))
+    import folder_graph  # noqa: E402
+    g = folder_graph.edges(os.path.join(ROOT, "tb"))
+    found = folder_graph.circles(g)
+    if found:
+        return ["Circles: " + "; ".join(" <-> ".join(c) for c in found)]
+    return [folder_graph.markdown(g), "",
+            "<sub>Computed from the `#include` lines by `scripts/folder_graph.py --markdown tb`; "
+            "layer 0 includes no other folder, every other folder only lower layers.</sub>"]
+
+
 RENDERERS = {
+    "folder-graph": ("tb", r_folder_graph),
     "synth-paths": ("docs/synth.json", r_synth_paths),
     "variants": ("cmake/cores.cmake", r_variants),
     "papers": ("docs/data/papers.json", r_papers),

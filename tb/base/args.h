@@ -1,6 +1,6 @@
 // Command-line parsing shared by every `hwinterp` subcommand.
 //
-// Contract (DESIGN.md): every subcommand takes --help and --json FILE; bad input
+// Contract (docs/command-line.md): every subcommand takes --help and --json FILE; bad input
 // ends the run with exit code 2 and one line naming the offending value. The
 // parser throws UsageError for that; the dispatcher prints it and exits 2.
 #pragma once

@@ -119,7 +119,7 @@ int run_cosim(int argc, char** argv, int first) {
   check_outputs_writable(args, {"vcd", "fst", "path-csv", "dump-frames"});
   // Validates the stimulus and opens every output file before the run.
   const std::unique_ptr<tb::BenchRun> run = variant.from_args(args, options);
-  std::cout << "hwinterp cosim: " << core->name << " (" << variant.limits.variant << "), mode "
+  std::cout << "hwinterp cosim: " << core->name << " (" << variant.spec.variant << "), mode "
             << mode;
   if (args.given("random")) std::cout << ", seed " << options.seed;
   std::cout << ", " << run->case_count() << (run->case_count() == 1 ? " case\n" : " cases\n")

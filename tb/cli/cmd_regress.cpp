@@ -123,7 +123,7 @@ int run_regress(int argc, char** argv, int first) {
           return (base + i) % n == k - 1;
         };
         if (auto run = v.regression(commands, seed, o, keep))
-          runs.push_back({core->name, v.limits.variant, mode, base, std::move(run)});
+          runs.push_back({core->name, v.spec.variant, mode, base, std::move(run)});
       }
     }
   }

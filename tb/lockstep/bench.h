@@ -76,26 +76,26 @@ class Bench {
   // path costs no simulation. `flatten` is flatten_payload<A, Cfg> of the
   // variant (tb/lockstep/payload_pins.h): the payload's pin values for
   // traces, frame dumps and mismatch reports.
-  Bench(VariantSpec limits, std::vector<Case<A>> cases, BenchOptions options,
+  Bench(VariantSpec spec, std::vector<Case<A>> cases, BenchOptions options,
         FlattenPayload<A> flatten)
-      : limits_(std::move(limits)),
+      : spec_(std::move(spec)),
         cases_(std::move(cases)),
         options_(std::move(options)),
         flatten_(flatten) {
     if (!options_.trace_path.empty() || !options_.frames_path.empty()) {
-      const std::vector<PortSpec> ports = input_ports(limits_);
+      const std::vector<PortSpec> ports = input_ports(spec_);
       if (!options_.trace_path.empty())
-        trace_ = std::make_unique<Trace>(options_.trace_path, ports, limits_.axes, limits_.pos_w,
+        trace_ = std::make_unique<Trace>(options_.trace_path, ports, spec_.axes, spec_.pos_w,
                                          options_.trace_window);
       if (!options_.frames_path.empty())
-        frames_ = std::make_unique<FrameWriter>(options_.frames_path, limits_, ports);
+        frames_ = std::make_unique<FrameWriter>(options_.frames_path, spec_, ports);
     }
     if (!options_.path_csv.empty()) {
       path_csv_ = std::make_unique<std::ofstream>(options_.path_csv);
       if (!*path_csv_)
         throw std::runtime_error("cannot write path CSV '" + options_.path_csv + "'");
       *path_csv_ << "case,cycle,kind";
-      for (int i = 0; i < limits_.axes; ++i) *path_csv_ << ",p" << i;
+      for (int i = 0; i < spec_.axes; ++i) *path_csv_ << ",p" << i;
       *path_csv_ << ",error,bound\n";
     }
     if (cases_.empty())
@@ -208,7 +208,7 @@ class Bench {
   // Results of the cases that ran (a mismatch stops the run).
   const std::vector<CaseResult>& results() const { return results_; }
   uint64_t cycles() const { return cycle_; }
-  const VariantSpec& limits() const { return limits_; }
+  const VariantSpec& spec() const { return spec_; }
   size_t case_count() const { return cases_.size(); }
   // Closes the trace (FST conversion), the frame file and the path CSV;
   // throws std::runtime_error on failure.
@@ -230,14 +230,14 @@ class Bench {
   void start_case() {
     const Case<A>& c = cases_[case_index_];
     CaseResult r;
-    r.core = limits_.core;
-    r.variant = limits_.variant;
+    r.core = spec_.core;
+    r.variant = spec_.variant;
     r.name = c.name;
     r.ordinal = c.ordinal;
     r.mode = options_.mode;
     r.seed = options_.seed;
     r.commands_offered = command_count(c);
-    r.steps.assign(static_cast<size_t>(limits_.axes), 0);
+    r.steps.assign(static_cast<size_t>(spec_.axes), 0);
     r.start = c.start;
     if (options_.record_path) r.visited.push_back(c.start);
     results_.push_back(std::move(r));
@@ -245,7 +245,7 @@ class Bench {
     phase_ = Phase::kReset;
     phase_left_ = kResetCycles;
     case_start_cycle_ = cycle_;
-    budget_ = cycle_budget(c, limits_);
+    budget_ = cycle_budget(c, spec_);
     item_ = 0;
     items_left_ = !c.items.empty() || c.more;
     have_streamed_ = false;
@@ -255,8 +255,8 @@ class Bench {
     last_ready_ = false;
     last_busy_ = false;
     abort_open_ = false;
-    monitors_ = StepdirMonitors(limits_.axes);
-    scoreboard_.emplace(limits_, c.start, case_start_cycle_);
+    monitors_ = StepdirMonitors(spec_.axes);
+    scoreboard_.emplace(spec_, c.start, case_start_cycle_);
     case_clock_start_ = 0;  // set by the case's first frame
     path_target_ = c.start;
     path_row("start", c.start);
@@ -343,7 +343,7 @@ class Bench {
       }
       have_streamed_ = true;
       if (streamed_.kind == Kind::kCommand) {
-        budget_ += streamed_command_budget<A>(streamed_.cmd, limits_, settings_);
+        budget_ += streamed_command_budget<A>(streamed_.cmd, spec_, settings_);
         ++results_.back().commands_offered;
       } else if (streamed_.kind == Kind::kGap) {
         budget_ += 2 * streamed_.cycles;
@@ -420,11 +420,11 @@ class Bench {
       m.rtl = r;
     };
     differs("cmd_ready_o", hls.cmd_ready, rtl.cmd_ready);
-    for (int i = 0; i < limits_.axes; ++i)
+    for (int i = 0; i < spec_.axes; ++i)
       differs("step_o[" + std::to_string(i) + "]", (hls.step >> i) & 1, (rtl.step >> i) & 1);
-    for (int i = 0; i < limits_.axes; ++i)
+    for (int i = 0; i < spec_.axes; ++i)
       differs("dir_o[" + std::to_string(i) + "]", (hls.dir >> i) & 1, (rtl.dir >> i) & 1);
-    for (int i = 0; i < limits_.axes; ++i)
+    for (int i = 0; i < spec_.axes; ++i)
       differs("pos_o[" + std::to_string(i) + "]", hls.pos[static_cast<size_t>(i)],
               rtl.pos[static_cast<size_t>(i)]);
     differs("busy_o", hls.busy, rtl.busy);
@@ -433,7 +433,7 @@ class Bench {
     uint64_t in[Trace::kMaxInputs] = {};
     flat_inputs<A>(frame_, flatten_, in);
     size_t k = 0;
-    for (const PortSpec& p : input_ports(limits_)) {
+    for (const PortSpec& p : input_ports(spec_)) {
       Json values = Json::array();
       for (int i = 0; i < p.count; ++i) values.push_back(p.value(in[k++]));
       m.inputs[p.name] = p.count == 1 ? values[0] : values;
@@ -446,7 +446,7 @@ class Bench {
   void print_progress() const {
     const CaseResult& r = results_.back();
     std::fprintf(stderr, "  [%s %s] cycle %llu: case %zu/%zu '%s', command %llu/%llu\n",
-                 limits_.variant.c_str(), options_.mode.c_str(),
+                 spec_.variant.c_str(), options_.mode.c_str(),
                  static_cast<unsigned long long>(cycle_), case_index_ + 1, cases_.size(),
                  r.name.c_str(), static_cast<unsigned long long>(r.commands),
                  static_cast<unsigned long long>(r.commands_offered));
@@ -468,11 +468,11 @@ class Bench {
     *path_csv_ << '\n';
   }
   void ideal_rows(const typename A::Command& cmd) {
-    const typename A::Reference ref(path_target_, cmd, settings_.setup, limits_);
+    const typename A::Reference ref(path_target_, cmd, settings_.setup, spec_);
     for (const auto& p : ref.ideal()) path_row("ideal", p);
   }
 
-  VariantSpec limits_;
+  VariantSpec spec_;
   std::vector<Case<A>> cases_;
   BenchOptions options_;
   FlattenPayload<A> flatten_;

@@ -28,9 +28,9 @@ struct type_tag {
 template <class A, class Cfg>
 class BenchRunOf final : public BenchRun {
  public:
-  BenchRunOf(VariantSpec limits, std::vector<Case<A>> cases, const BenchOptions& options)
-      : bench_(std::move(limits), std::move(cases), options, &flatten_payload<A, Cfg>) {}
-  const VariantSpec& limits() const override { return bench_.limits(); }
+  BenchRunOf(VariantSpec spec, std::vector<Case<A>> cases, const BenchOptions& options)
+      : bench_(std::move(spec), std::move(cases), options, &flatten_payload<A, Cfg>) {}
+  const VariantSpec& spec() const override { return bench_.spec(); }
   size_t case_count() const override { return bench_.case_count(); }
   void run_direct() override { tb::run_direct<A, Cfg>(bench_); }
   std::unique_ptr<sc_core::sc_module> systemc_module(ScRunControl& control) override {

@@ -15,15 +15,15 @@ namespace {
 template <class A, class Cfg>
 VariantEntry make_variant() {
   VariantEntry v;
-  v.limits = spec_of<A, Cfg>();
-  v.from_args = [l = v.limits](const cli::Args& args, const BenchOptions& options) {
+  v.spec = spec_of<A, Cfg>();
+  v.from_args = [l = v.spec](const cli::Args& args, const BenchOptions& options) {
     return make_run<A, Cfg>(l, cases_from_args<A>(args, l, options.seed), options);
   };
-  v.from_job = [l = v.limits](const std::string& job, const BenchOptions& options) {
+  v.from_job = [l = v.spec](const std::string& job, const BenchOptions& options) {
     std::istringstream in(job);
     return make_run<A, Cfg>(l, parse_job<A>(in, "job", l, default_settings<A>(l)), options);
   };
-  v.regression = [l = v.limits](
+  v.regression = [l = v.spec](
                      uint64_t commands, uint64_t seed, const BenchOptions& options,
                      const std::function<bool(uint64_t)>& keep) -> std::unique_ptr<BenchRun> {
     std::vector<Case<A>> all = A::regression_cases(l, commands, seed), kept;
@@ -34,7 +34,7 @@ VariantEntry make_variant() {
     if (kept.empty()) return nullptr;
     return make_run<A, Cfg>(l, std::move(kept), options);
   };
-  v.regression_size = [l = v.limits](uint64_t commands) {
+  v.regression_size = [l = v.spec](uint64_t commands) {
     return static_cast<uint64_t>(A::regression_cases(l, commands, 0).size());
   };
   return v;
@@ -85,16 +85,16 @@ std::string core_list() {
   std::vector<std::string> items;
   for (const auto& c : all_cores()) {
     std::vector<std::string> vs;
-    for (const auto& v : c.variants) vs.push_back(v.limits.variant);
+    for (const auto& v : c.variants) vs.push_back(v.spec.variant);
     items.push_back(c.name + " (" + join(vs) + ")");
   }
   return join(items);
 }
 
 const VariantEntry& CoreEntry::select(const cli::Args& args) const {
-  std::vector<VariantSpec> limits;
-  for (const auto& v : variants) limits.push_back(v.limits);
-  return variants[select_variant(name, limits, args)];
+  std::vector<VariantSpec> specs;
+  for (const auto& v : variants) specs.push_back(v.spec);
+  return variants[select_variant(name, specs, args)];
 }
 
 void run_systemc(const std::vector<BenchRun*>& runs) {

@@ -28,7 +28,7 @@ class ScRunControl;
 class BenchRun {
  public:
   virtual ~BenchRun() = default;
-  virtual const VariantSpec& limits() const = 0;
+  virtual const VariantSpec& spec() const = 0;
   virtual size_t case_count() const = 0;
   // Runs to the end in the direct mode.
   virtual void run_direct() = 0;
@@ -46,7 +46,7 @@ class BenchRun {
 void run_systemc(const std::vector<BenchRun*>& runs);
 
 struct VariantEntry {
-  VariantSpec limits;
+  VariantSpec spec;
   // The stimulus the command line asks for: --job, --random/--seed, or the
   // core's own sources; settings from --feed, the timing flags and the
   // core's own. Validated; throws cli::UsageError naming the bad value.

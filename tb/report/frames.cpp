@@ -5,12 +5,12 @@
 
 namespace hwinterp::tb {
 
-FrameWriter::FrameWriter(const std::string& path, const VariantSpec& limits,
+FrameWriter::FrameWriter(const std::string& path, const VariantSpec& spec,
                          std::vector<PortSpec> inputs)
     : path_(path), inputs_(std::move(inputs)), out_(path) {
   if (!out_) throw std::runtime_error("cannot write frames '" + path + "'");
   std::ofstream tb(path + ".sv");
-  tb << replay_testbench(limits, inputs_);
+  tb << replay_testbench(spec, inputs_);
   tb.close();
   if (!tb) throw std::runtime_error("cannot write replay testbench '" + path + ".sv'");
 }

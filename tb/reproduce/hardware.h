@@ -26,7 +26,7 @@ inline HardwareRun run_hardware(const std::string& core, const std::string& job)
   const auto run = v.from_job(job, o);
   run->run_direct();
   if (run->results().size() != 1) throw std::logic_error("run_hardware: one case expected");
-  return {v.limits.variant, run->results().front()};
+  return {v.spec.variant, run->results().front()};
 }
 
 // "(x,y)(x,y)..." of the points after the first (the moves).

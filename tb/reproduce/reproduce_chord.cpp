@@ -77,7 +77,7 @@ PaperReproduction reproduce_chord() {
              (cut - paper).norm() < 1e-9);
   }
   const Vec2 last = t2.steps.empty() ? Vec2(0, 0) : t2.steps.back().point;
-  rows.add("Table II point 7 (ACCEPTANCE, 6 decimals)", "(-0.030180,3.999886)", point(last, "%.6f"),
+  rows.add("Table II point 7 (exact chain, 6 decimals)", "(-0.030180,3.999886)", point(last, "%.6f"),
            std::abs(last.x() + 0.030180) <= 5e-7 && std::abs(last.y() - 3.999886) <= 5e-7);
   rows.add("Table II: overshoot past (0,4) (mm)", "0.03", fmt("%.6f", t2.overshoot),
            std::abs(t2.overshoot - 0.03) < 0.0005);

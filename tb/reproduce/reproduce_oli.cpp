@@ -20,7 +20,7 @@ namespace {
 using models::CamLaw;
 
 constexpr double kPi = 3.14159265358979323846;
-constexpr double kVerifySlack = 1e-9;  // mm, see ACCEPTANCE.md
+constexpr double kVerifySlack = 1e-9;  // mm: the verifier may exceed e by this (docs/papers.md)
 
 struct Table1Row {
   double tol, paper_e;

@@ -34,9 +34,9 @@ struct Method {
   std::function<StepPath(const LatticePoint&, const LatticePoint&)> run;
   std::function<double(const LatticePoint&, const LatticePoint&)> bound;
   bool strict;             // error < bound (else <=)
-  std::string ticks_rule;  // ACCEPTANCE's completion ticks
+  std::string ticks_rule;  // paper 004's completion ticks
   std::function<double(int64_t, int64_t)> ticks;
-  std::string accepted;  // ACCEPTANCE's bound over |dx|, |dy| <= 40
+  std::string accepted;  // the bound seen over |dx|, |dy| <= 40 (paper 004)
   double accepted_value;
 };
 
@@ -240,7 +240,7 @@ PaperReproduction reproduce_ratio() {
                              {"bound", bnd},
                              {"ok", ok}}));
   }
-  rows.add("integer dividers at 1 MHz: line 1 error (ACCEPTANCE)", "3.1", fmt("%.4f", line1_div),
+  rows.add("integer dividers at 1 MHz: line 1 error (reproduced)", "3.1", fmt("%.4f", line1_div),
            std::abs(line1_div - 3.1) < 0.05);
   rows.add("integer dividers at 1 MHz: 8 lines within the divider bound", "yes",
            div_ok ? "yes" : "no", div_ok);

@@ -56,14 +56,14 @@ class Scoreboard {
 
   // `case_start_cycle`: run cycle before the case's first edge (cycles in
   // reports are counted from the case start).
-  Scoreboard(const VariantSpec& limits, models::LatticePoint start, uint64_t case_start_cycle)
-      : limits_(limits),
-        axes_(limits.axes),
+  Scoreboard(const VariantSpec& spec, models::LatticePoint start, uint64_t case_start_cycle)
+      : limits_(spec),
+        axes_(spec.axes),
         case_start_cycle_(case_start_cycle),
         start_(start),
         at_(start),
         expected_end_(std::move(start)),
-        pos_mask_(limits.pos_w >= 64 ? ~uint64_t{0} : (uint64_t{1} << limits.pos_w) - 1) {}
+        pos_mask_(spec.pos_w >= 64 ? ~uint64_t{0} : (uint64_t{1} << spec.pos_w) - 1) {}
 
   // A command the core took, in order, with the setup it was taken with.
   void command_taken(const typename A::Command& cmd, const typename A::Setup& setup) {

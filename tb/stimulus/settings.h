@@ -16,18 +16,18 @@ namespace hwinterp::tb {
 
 // Mostly short settings (fast runs, many stalls), sometimes long ones (up
 // to 16 clocks, or what TIM_W holds).
-StepdirTiming random_timing(Rng& rng, const VariantSpec& limits);
+StepdirTiming random_timing(Rng& rng, const VariantSpec& spec);
 
 // Full feed 40 %, above full (still full) 10 %, 1/4..1 30 %, slow 20 %.
-uint64_t random_feed(Rng& rng, const VariantSpec& limits);
+uint64_t random_feed(Rng& rng, const VariantSpec& spec);
 
 // A feed given as `full`, a clock fraction with a '.' (0 < F <= 1) or a feed
 // word (0 = hold). Throws cli::UsageError naming `where` and the text.
-uint64_t parse_feed(const std::string& text, const VariantSpec& limits, const std::string& where);
+uint64_t parse_feed(const std::string& text, const VariantSpec& spec, const std::string& where);
 
 // The feed word fits feed_i (FEED_W + 1 bits) and every timing setting fits
 // TIM_W bits; throws cli::UsageError naming `where`, the setting and value.
-void validate_feed_and_timing(uint64_t feed, const StepdirTiming& timing, const VariantSpec& limits,
+void validate_feed_and_timing(uint64_t feed, const StepdirTiming& timing, const VariantSpec& spec,
                               const std::string& where);
 
 // "(a,b,c)" for messages.
@@ -47,7 +47,7 @@ void check_coordinate(int64_t v, const std::string& what);
 // Leading-axis coordinates padded with zeros to the variant's axis count;
 // throws cli::UsageError (`what`: where they came from) when there are none
 // or more than the axes, or one is past kCoordinateLimit.
-models::LatticePoint pad_point(const VariantSpec& limits, const std::vector<int64_t>& v,
+models::LatticePoint pad_point(const VariantSpec& spec, const std::vector<int64_t>& v,
                                const std::string& what);
 
 }  // namespace hwinterp::tb

@@ -27,19 +27,19 @@
 namespace hwinterp::tb {
 
 template <class A>
-RunSettings<A> default_settings(const VariantSpec& limits) {
+RunSettings<A> default_settings(const VariantSpec& spec) {
   RunSettings<A> s;
-  s.feed = limits.full_feed();
-  s.timing = limits.default_timing;
+  s.feed = spec.full_feed();
+  s.timing = spec.default_timing;
   return s;
 }
 
 template <class A>
-RunSettings<A> random_settings(Rng& rng, const VariantSpec& limits) {
+RunSettings<A> random_settings(Rng& rng, const VariantSpec& spec) {
   RunSettings<A> s;
-  s.feed = random_feed(rng, limits);
+  s.feed = random_feed(rng, spec);
   s.setup = A::random_setup(rng);
-  s.timing = random_timing(rng, limits);
+  s.timing = random_timing(rng, spec);
   return s;
 }
 
@@ -56,14 +56,14 @@ struct RandomExtras {
 // commands and idle gaps, random timing settings, feed words and setups
 // changed while the core runs. The same seed gives the same case everywhere.
 template <class A>
-Case<A> random_case(const VariantSpec& limits, uint64_t commands, uint64_t seed,
+Case<A> random_case(const VariantSpec& spec, uint64_t commands, uint64_t seed,
                     RandomExtras extras = {}) {
   using Kind = typename Item<A>::Kind;
   Rng rng(seed), extra(seed ^ 0x5eedab0f7ULL);
   Case<A> c;
   c.name = "random";
-  c.start.assign(static_cast<size_t>(limits.axes), 0);
-  c.settings = random_settings<A>(rng, limits);
+  c.start.assign(static_cast<size_t>(spec.axes), 0);
+  c.settings = random_settings<A>(rng, spec);
   RunSettings<A> now = c.settings;
   models::LatticePoint at = c.start;
   typename A::Command previous{};
@@ -76,7 +76,7 @@ Case<A> random_case(const VariantSpec& limits, uint64_t commands, uint64_t seed,
   };
   for (uint64_t n = 0; n < commands; ++n) {
     if (rng.chance(1, 8)) {
-      now = random_settings<A>(rng, limits);
+      now = random_settings<A>(rng, spec);
       push(Kind::kSettings);
     }
     if (rng.chance(1, 10)) push(Kind::kGap, static_cast<uint64_t>(rng.range(1, 20)));
@@ -97,7 +97,7 @@ Case<A> random_case(const VariantSpec& limits, uint64_t commands, uint64_t seed,
       now = resume;
       push(Kind::kSettings);
     }
-    const typename A::Command cmd = A::random_command(rng, limits, at, previous);
+    const typename A::Command cmd = A::random_command(rng, spec, at, previous);
     A::apply(cmd, at);
     previous = cmd;
     c.items.push_back(command_item<A>(cmd));
@@ -109,11 +109,11 @@ Case<A> random_case(const VariantSpec& limits, uint64_t commands, uint64_t seed,
 // ("random") and the same seed with aborts and feed holds
 // ("random_abort_hold"); nothing when `commands` is 0.
 template <class A>
-void append_random_streams(std::vector<Case<A>>& cases, const VariantSpec& limits,
+void append_random_streams(std::vector<Case<A>>& cases, const VariantSpec& spec,
                            uint64_t commands, uint64_t seed) {
   if (!commands) return;
-  cases.push_back(random_case<A>(limits, commands, seed));
-  cases.push_back(random_case<A>(limits, commands, seed, {true, true}));
+  cases.push_back(random_case<A>(spec, commands, seed));
+  cases.push_back(random_case<A>(spec, commands, seed, {true, true}));
   cases.back().name = "random_abort_hold";
 }
 
@@ -124,20 +124,20 @@ void append_random_streams(std::vector<Case<A>>& cases, const VariantSpec& limit
 // would never end. Throws cli::UsageError naming the case, the job line and
 // the value: nothing is simulated that would overflow.
 template <class A>
-void validate_case(const Case<A>& c, const VariantSpec& limits) {
+void validate_case(const Case<A>& c, const VariantSpec& spec) {
   using Kind = typename Item<A>::Kind;
   const std::string name = "case '" + c.name + "'";
-  if (static_cast<int>(c.start.size()) != limits.axes)
+  if (static_cast<int>(c.start.size()) != spec.axes)
     throw cli::UsageError(name + ": start has " + std::to_string(c.start.size()) + " axes");
   for (const int64_t v : c.start) check_coordinate(v, name + ": start");
-  validate_feed_and_timing(c.settings.feed, c.settings.timing, limits, name);
+  validate_feed_and_timing(c.settings.feed, c.settings.timing, spec, name);
   uint64_t feed = c.settings.feed;
   models::LatticePoint at = c.start;
   for (const auto& it : c.items) {
     const std::string where =
         name + (it.source_line ? " (job line " + std::to_string(it.source_line) + ")" : "");
     if (it.kind == Kind::kSettings) {
-      validate_feed_and_timing(it.settings.feed, it.settings.timing, limits, where);
+      validate_feed_and_timing(it.settings.feed, it.settings.timing, spec, where);
       feed = it.settings.feed;
     }
     if ((it.kind == Kind::kCommand || it.kind == Kind::kDrain) && feed == 0)
@@ -147,17 +147,17 @@ void validate_case(const Case<A>& c, const VariantSpec& limits) {
     if (it.kind != Kind::kCommand) continue;
     models::LatticePoint from = at;  // as the core's position counters see it
     for (size_t a = 0; a < from.size(); ++a) from[a] -= c.start[a];
-    A::validate(it.cmd, from, limits, where);
+    A::validate(it.cmd, from, spec, where);
     models::LatticePoint next = at;
     A::apply(it.cmd, next);
-    for (int i = 0; i < limits.axes; ++i) {
+    for (int i = 0; i < spec.axes; ++i) {
       // The core counts from 0 after reset: the counter holds at - start.
       const size_t a = static_cast<size_t>(i);
       const int64_t rel = next[a] - c.start[a];
-      if (rel > limits.pos_max() || rel < limits.pos_min())
+      if (rel > spec.pos_max() || rel < spec.pos_min())
         throw cli::UsageError(where + ": axis " + std::to_string(i) + " would reach position " +
                               std::to_string(next[a]) + ", past the " +
-                              std::to_string(limits.pos_w) + "-bit position counter");
+                              std::to_string(spec.pos_w) + "-bit position counter");
     }
     at = next;
   }
@@ -176,22 +176,22 @@ inline uint64_t timing_round(const StepdirTiming& t) {
 // core, with the same margin as cycle_budget(): added to the budget as the
 // bench pulls it.
 template <class A>
-uint64_t streamed_command_budget(const typename A::Command& cmd, const VariantSpec& limits,
+uint64_t streamed_command_budget(const typename A::Command& cmd, const VariantSpec& spec,
                                  const RunSettings<A>& s) {
-  const uint64_t feed = s.feed ? s.feed : limits.full_feed();
-  const uint64_t feed_period = (limits.full_feed() + feed - 1) / feed;
-  return 2 * (16 + A::work(cmd, limits) * (feed_period + timing_round(s.timing)));
+  const uint64_t feed = s.feed ? s.feed : spec.full_feed();
+  const uint64_t feed_period = (spec.full_feed() + feed - 1) / feed;
+  return 2 * (16 + A::work(cmd, spec) * (feed_period + timing_round(s.timing)));
 }
 
 // Upper bound on the clock edges the case needs on a correct core, with
 // margin; running past it means the core hung. (Streamed items add theirs as
 // they come: streamed_command_budget().)
 template <class A>
-uint64_t cycle_budget(const Case<A>& c, const VariantSpec& limits) {
+uint64_t cycle_budget(const Case<A>& c, const VariantSpec& spec) {
   using Kind = typename Item<A>::Kind;
   // Worst case per engine operation: a full feed period plus one complete
   // step/dir timing round (len + space + setup + hold) of stall.
-  uint64_t min_feed = c.settings.feed ? c.settings.feed : limits.full_feed();
+  uint64_t min_feed = c.settings.feed ? c.settings.feed : spec.full_feed();
   uint64_t max_round = timing_round(c.settings.timing);
   uint64_t budget = 64, operations = 0;
   for (const auto& it : c.items) {
@@ -201,13 +201,13 @@ uint64_t cycle_budget(const Case<A>& c, const VariantSpec& limits) {
     } else if (it.kind == Kind::kGap) {
       budget += it.cycles;
     } else if (it.kind == Kind::kCommand) {
-      operations += A::work(it.cmd, limits);
+      operations += A::work(it.cmd, spec);
       budget += 16;
     } else {
       budget += 16;
     }
   }
-  const uint64_t feed_period = (limits.full_feed() + min_feed - 1) / min_feed;
+  const uint64_t feed_period = (spec.full_feed() + min_feed - 1) / min_feed;
   return 2 * (budget + operations * (feed_period + max_round)) + 1000;
 }
 
@@ -217,13 +217,13 @@ uint64_t cycle_budget(const Case<A>& c, const VariantSpec& limits) {
 template <class A>
 class JobLine {
  public:
-  JobLine(const std::vector<std::string>& words, std::string where, const VariantSpec& limits,
+  JobLine(const std::vector<std::string>& words, std::string where, const VariantSpec& spec,
           Case<A>& c, models::LatticePoint& at, int line_no)
-      : words(words), where(std::move(where)), limits(limits), case_(c), at_(at), line_(line_no) {}
+      : words(words), where(std::move(where)), spec(spec), case_(c), at_(at), line_(line_no) {}
 
   const std::vector<std::string>& words;
   const std::string where;  // "file:line"
-  const VariantSpec& limits;
+  const VariantSpec& spec;
 
   const models::LatticePoint& at() const { return at_; }
   // Appends a command; the planned position follows it (and must stay on the
@@ -272,7 +272,7 @@ class JobLine {
   }
   // Leading-axis coordinates from word `first` to the end, padded to the axes.
   models::LatticePoint point(size_t first) const {
-    return pad_point(limits, integers(first), where + ": " + words[0]);
+    return pad_point(spec, integers(first), where + ": " + words[0]);
   }
 
  private:
@@ -295,7 +295,7 @@ class JobLine {
 // naming file:line and the bad value.
 // `path` names the job in messages.
 template <class A>
-std::vector<Case<A>> parse_job(std::istream& in, const std::string& path, const VariantSpec& limits,
+std::vector<Case<A>> parse_job(std::istream& in, const std::string& path, const VariantSpec& spec,
                                const RunSettings<A>& defaults) {
   using Kind = typename Item<A>::Kind;
   std::vector<Case<A>> cases;
@@ -303,7 +303,7 @@ std::vector<Case<A>> parse_job(std::istream& in, const std::string& path, const 
   auto new_case = [&](const std::string& name) {
     Case<A> c;
     c.name = name;
-    c.start.assign(static_cast<size_t>(limits.axes), 0);
+    c.start.assign(static_cast<size_t>(spec.axes), 0);
     c.settings = defaults;
     cases.push_back(std::move(c));
     at = cases.back().start;
@@ -326,7 +326,7 @@ std::vector<Case<A>> parse_job(std::istream& in, const std::string& path, const 
     }
     if (cases.empty()) new_case("job" + std::to_string(cases.size() + 1));
     Case<A>& c = cases.back();
-    JobLine<A> line(w, where, limits, c, at, line_no);
+    JobLine<A> line(w, where, spec, c, at, line_no);
     auto one_int = [&](int64_t lo, int64_t hi) {
       if (w.size() != 2) throw cli::UsageError(where + ": '" + key + "' takes one value");
       const int64_t v = cli::parse_integer(w[1], where);
@@ -342,7 +342,7 @@ std::vector<Case<A>> parse_job(std::istream& in, const std::string& path, const 
       it.source_line = line_no;
       c.items.push_back(it);
     };
-    const auto tim_max = static_cast<int64_t>(limits.tim_max());
+    const auto tim_max = static_cast<int64_t>(spec.tim_max());
     if (key == "start") {
       if (!c.items.empty())
         throw cli::UsageError(where + ": 'start' must come before the case's commands");
@@ -350,7 +350,7 @@ std::vector<Case<A>> parse_job(std::istream& in, const std::string& path, const 
       at = c.start;
     } else if (key == "feed") {
       if (w.size() != 2) throw cli::UsageError(where + ": 'feed' takes one value");
-      line.settings().feed = parse_feed(w[1], limits, where);
+      line.settings().feed = parse_feed(w[1], spec, where);
     } else if (key == "step_len") {
       line.settings().timing.step_len = static_cast<uint32_t>(one_int(0, tim_max));
     } else if (key == "step_space") {
@@ -377,11 +377,11 @@ std::vector<Case<A>> parse_job(std::istream& in, const std::string& path, const 
 
 // A job file.
 template <class A>
-std::vector<Case<A>> parse_job(const std::string& path, const VariantSpec& limits,
+std::vector<Case<A>> parse_job(const std::string& path, const VariantSpec& spec,
                                const RunSettings<A>& defaults) {
   std::ifstream in(path);
   if (!in) throw cli::UsageError("--job: cannot read '" + path + "'");
-  return parse_job<A>(in, path, limits, defaults);
+  return parse_job<A>(in, path, spec, defaults);
 }
 
 }  // namespace hwinterp::tb

@@ -75,7 +75,7 @@ const std::vector<FrameRun<typename V::Adapter>>& frames() {
   static const std::vector<FrameRun<A>> recorded = [] {
     BenchOptions o;
     o.mode = "direct";
-    Bench<A> bench(V::limits(), {stream<A>(V::limits())}, o, flatten<V>());
+    Bench<A> bench(V::spec(), {stream<A>(V::spec())}, o, flatten<V>());
     RecordingBench<A> rec{bench, {}};
     tb::run_direct<A, typename V::Cfg>(rec);
     if (!bench.results().at(0).passed()) throw std::runtime_error("the recorded run failed");
@@ -174,7 +174,7 @@ double thread_seconds() {
 template <class V>
 void BM_Checks(benchmark::State& state) {
   using A = typename V::Adapter;
-  const Case<A> c = stream<A>(V::limits());
+  const Case<A> c = stream<A>(V::spec());
   frames<V>();
   uint64_t lock_clocks = 0, full_clocks = 0, differ = 0;
   double lock_s = 0, full_s = 0;
@@ -189,7 +189,7 @@ void BM_Checks(benchmark::State& state) {
     const double t1 = thread_seconds();
     BenchOptions o;
     o.mode = "direct";
-    Bench<A> bench(V::limits(), {c}, o, flatten<V>());
+    Bench<A> bench(V::spec(), {c}, o, flatten<V>());
     tb::run_direct<A, typename V::Cfg>(bench);
     const double t2 = thread_seconds();
     full_clocks += bench.cycles();

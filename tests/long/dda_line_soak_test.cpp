@@ -13,7 +13,7 @@ using A = cores::dda_line::Adapter;
 
 template <class V>
 void long_lines() {
-  const VariantSpec l = V::limits();
+  const VariantSpec l = V::spec();
   for (const bool half : {false, true}) {
     RunSettings<A> s = default_settings<A>(l);
     s.setup.half_preload = half;

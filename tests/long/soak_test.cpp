@@ -19,8 +19,8 @@ TYPED_TEST(Soak, DirectManySeeds) {
   uint64_t cycles = 0;
   for (uint64_t seed = 100; seed < 110; ++seed) {
     const auto r = run_direct<TypeParam>(
-        {random_case<A>(TypeParam::limits(), 2500, seed),
-         random_case<A>(TypeParam::limits(), 2500, seed, {seed % 2 == 0, seed % 2 == 1})});
+        {random_case<A>(TypeParam::spec(), 2500, seed),
+         random_case<A>(TypeParam::spec(), 2500, seed, {seed % 2 == 0, seed % 2 == 1})});
     expect_all_pass(r);
     cycles += total_cycles(r);
   }
@@ -30,7 +30,7 @@ TYPED_TEST(Soak, DirectManySeeds) {
 // One long stream in the SystemC mode.
 TYPED_TEST(Soak, SystemcLongStream) {
   using A = typename TypeParam::Adapter;
-  expect_all_pass(run_systemc<TypeParam>({random_case<A>(TypeParam::limits(), 3000, 77, {true, true})}));
+  expect_all_pass(run_systemc<TypeParam>({random_case<A>(TypeParam::spec(), 3000, 77, {true, true})}));
 }
 
 }  // namespace

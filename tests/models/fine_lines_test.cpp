@@ -1,7 +1,7 @@
 // The fine line interpolators of paper 004 side by side: fixed ratio, PPC,
 // DDA (plain and half preload, from models/dda_line_model), minimum deviation
 // and Bresenham. Common properties: exact pulse counts, exact end point,
-// normal error within each method's bound, completion ticks per ACCEPTANCE.
+// normal error within each method's bound, completion ticks as paper 004 counts them.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -78,7 +78,7 @@ TEST(FineLines, PaperLines) {
   }
 }
 
-// Every line with |dx|, |dy| <= 40: the bounds of ACCEPTANCE 004, and how
+// Every line with |dx|, |dy| <= 40: the bounds paper 004 reports, and how
 // close each method comes to them.
 TEST(FineLines, AllLinesUpTo40) {
   const std::vector<Method> all = methods();
@@ -91,7 +91,7 @@ TEST(FineLines, AllLinesUpTo40) {
       if (HasFailure()) return;
     }
   }
-  // ACCEPTANCE: fixed ratio <= 0.707, PPC < 1, DDA < 1 (0.70 half), min
+  // Paper 004: fixed ratio <= 0.707, PPC < 1, DDA < 1 (0.70 half), min
   // deviation and Bresenham <= 0.5; and the bounds are nearly reached.
   EXPECT_LE(worst[0], std::sqrt(0.5) + 1e-12);
   EXPECT_GT(worst[0], 0.68);
@@ -164,7 +164,7 @@ TEST(FixedRatio, IntegerDividerAtOneMegahertz) {
   EXPECT_EQ(p.pulses(), (std::array<uint64_t, 2>{20, 40}));
   EXPECT_TRUE(p.ends_on_end());
   const double e = p.line_error().max_error;
-  EXPECT_NEAR(e, 3.1, 0.05);  // ACCEPTANCE: 3.1 steps on line 1 at 1 MHz
+  EXPECT_NEAR(e, 3.1, 0.05);  // reproduced: 3.1 steps on line 1 at 1 MHz
   EXPECT_GT(e, fixed_ratio_error_bound(a, b));
   EXPECT_LE(e, fixed_ratio_divider_bound(a, b, pd::kRatioVelocity, 1e6) + 1e-12);
   EXPECT_EQ(p.ticks, 240);  // 40 y pulses of 6 clocks

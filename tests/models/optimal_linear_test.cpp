@@ -11,7 +11,7 @@
 namespace hwinterp::models {
 namespace {
 
-// Slack of the independent verifier over the planner's e (ACCEPTANCE.md).
+// Slack of the independent verifier over the planner's e (docs/papers.md).
 constexpr double kVerifySlack = 1e-9;
 
 const TranslatingCam& cam1() {

@@ -19,7 +19,7 @@ class Conformance : public ::testing::Test {
  protected:
   using A = typename V::Adapter;
   using Kind = typename Item<A>::Kind;
-  VariantSpec l = V::limits();
+  VariantSpec l = V::spec();
 
   // A command that keeps the core busy for a while (at least `work` engine
   // operations), drawn from the core's own random generator.

@@ -1,5 +1,5 @@
 // `hwinterp cosim` and `hwinterp regress` through the real executable: the
-// command-line contract of DESIGN.md (JSON keys, exit codes 0/1/2, one-line
+// command-line contract (docs/command-line.md: JSON keys, exit codes 0/1/2, one-line
 // errors naming the value, traces, aborts, the replay command).
 #include <gtest/gtest.h>
 
@@ -69,6 +69,33 @@ TEST(CosimCli, AbortAtReportsWhereTheMachineIs) {
   EXPECT_EQ(j["abort"]["position"], j["end_position"]);
   EXPECT_LT(j["end_position"][0].get<int>(), 200);
   EXPECT_GT(j["end_position"][0].get<int>(), 0);
+}
+
+// The mismatch report names the inputs of its edge by port, from the core's
+// payload field list: the command on the pins at the edge that takes it (the
+// third: two reset clocks first), signed deltas as numbers.
+TEST(CosimCli, MismatchReportsTheInputsOfItsEdge) {
+  const std::string dir = scratch_dir("cosim_mismatch_inputs");
+  const CliResult r = run_hwinterp(
+      "cosim --core dda_line --line 0,0,-5,3 --half-preload --mode direct "
+      "--inject mismatch@3 --json " +
+      dir + "/m.json");
+  EXPECT_EQ(r.code, 1) << r.out << r.err;
+  const Json in = read_json(dir + "/m.json")["first_mismatch"]["inputs"];
+  EXPECT_EQ(in["rst_ni"], 1);
+  EXPECT_EQ(in["cmd_valid_i"], 1);
+  EXPECT_EQ(in["cmd_delta_i"], Json::array({-5, 3}));
+  EXPECT_EQ(in["half_preload_i"], 1);
+  EXPECT_EQ(in["feed_i"], 65536);
+  EXPECT_EQ(in["abort_i"], 0);
+  // The next edge: the command taken, the payload cleared.
+  const CliResult next = run_hwinterp(
+      "cosim --core dda_line --line 0,0,-5,3 --mode direct --inject mismatch@4 --json " + dir +
+      "/n.json");
+  EXPECT_EQ(next.code, 1);
+  const Json in4 = read_json(dir + "/n.json")["first_mismatch"]["inputs"];
+  EXPECT_EQ(in4["cmd_valid_i"], 0);
+  EXPECT_EQ(in4["cmd_delta_i"], Json::array({0, 0}));
 }
 
 TEST(CosimCli, MismatchExitsOneWithReplayCommandAndTrace) {

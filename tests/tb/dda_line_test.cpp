@@ -33,7 +33,7 @@ A::Command delta(std::initializer_list<int64_t> d) {
 // The eight lines of 004 with plain and half preload: exact ends, and the
 // errors the model predicts (every move was compared with it as well).
 TEST(DdaLine, PaperLines) {
-  const VariantSpec l = N2::limits();
+  const VariantSpec l = N2::spec();
   RunSettings<A> plain = default_settings<A>(l), half = plain;
   half.setup.half_preload = true;
   const auto p = run_direct<N2>(paper_lines_004<A>(l, plain));
@@ -54,7 +54,7 @@ TEST(DdaLine, PaperLines) {
 // edge cases: bit length, shift), with both signs and both preloads.
 template <class V>
 void power_of_two_edges() {
-  const VariantSpec l = V::limits();
+  const VariantSpec l = V::spec();
   const int top = std::min(12, l.param("ACC_W") - 2);
   for (const bool half : {false, true}) {
     Case<A> c;
@@ -85,7 +85,7 @@ TEST(DdaLine, PowerOfTwoEdgeDeltas) {
 // output stage never lets a step out early (monitors) and never holds one
 // longer than the timing needs: one step every L + S = 5 clocks.
 TEST(DdaLine, StepRateIsExactlyTheTimingLimit) {
-  const VariantSpec l = N2::limits();
+  const VariantSpec l = N2::spec();
   for (int64_t n : {16, 100}) {
     const auto r =
         run_direct<N2>({delta_line_case<A>(l, "x", {0, 0}, {n, 0}, settings(l, {3, 2, 1, 1}))});
@@ -100,7 +100,7 @@ TEST(DdaLine, StepRateIsExactlyTheTimingLimit) {
 // A feed word of 1/4 of full: the engine iterates on one clock in four.
 // Two line lengths (64 and 128 iterations) cancel the fixed overhead.
 TEST(DdaLine, FeedWordSetsTheIterationRate) {
-  const VariantSpec l = N2::limits();
+  const VariantSpec l = N2::spec();
   RunSettings<A> full = settings(l, {1, 1, 1, 1}), quarter = full;
   quarter.feed = l.full_feed() / 4;
   auto cycles = [&](const RunSettings<A>& s, int64_t dy) {
@@ -120,7 +120,7 @@ TEST(DdaLine, FeedWordSetsTheIterationRate) {
 // is known when it falls). The run goes on (the DUTs still agree), and the
 // scoreboard sees the extra or missing moves too.
 TEST(DdaLine, EveryInjectedGlitchIsATimingViolation) {
-  const VariantSpec l = N2::limits();
+  const VariantSpec l = N2::spec();
   const std::vector<Case<A>> line = {
       delta_line_case<A>(l, "x", {0, 0}, {8, 0}, settings(l, {4, 4, 1, 1}))};
   const auto clean = run_direct<N2>(line);
@@ -153,7 +153,7 @@ TEST(DdaLine, EveryInjectedGlitchIsATimingViolation) {
 // model's path, idle within the bound, and a second command afterwards ends
 // exactly where the first would have.
 TEST(DdaLine, AbortAtEveryCycleOfALineLandsOnItsPath) {
-  const VariantSpec l = N2::limits();
+  const VariantSpec l = N2::spec();
   Case<A> c = delta_line_case<A>(l, "abort", {0, 0}, {20, 40}, settings(l, {2, 1, 1, 1}));
   const auto clean = run_direct<N2>({c});
   expect_all_pass(clean);
@@ -186,7 +186,7 @@ std::string write_job(const std::string& name, const std::string& text) {
 }
 
 TEST(DdaLineStimulus, JobFileCasesCommandsAndSettings) {
-  const VariantSpec l = N2::limits();
+  const VariantSpec l = N2::spec();
   const auto cases = parse_job<A>(write_job("ok.job",
                                             "# two cases\n"
                                             "case first\n"
@@ -226,7 +226,7 @@ TEST(DdaLineStimulus, JobFileCasesCommandsAndSettings) {
 }
 
 void expect_job_error(const std::string& text, const std::string& named) {
-  const VariantSpec l = N2::limits();
+  const VariantSpec l = N2::spec();
   try {
     const auto cases = parse_job<A>(write_job("bad.job", text), l, default_settings<A>(l));
     for (const auto& c : cases) validate_case(c, l);
@@ -256,7 +256,7 @@ TEST(DdaLineStimulus, BadJobLinesNameFileLineAndValue) {
 }
 
 TEST(DdaLineStimulus, RandomCaseIsReproducibleAndCoversTheSpace) {
-  const VariantSpec l = N4::limits();
+  const VariantSpec l = N4::spec();
   const Case<A> a = random_case<A>(l, 400, 99), b = random_case<A>(l, 400, 99),
                 c = random_case<A>(l, 400, 100);
   auto same = [](const Case<A>& x, const Case<A>& y) {

@@ -23,7 +23,7 @@ template <class A, class C>
 struct Variant {
   using Adapter = A;
   using Cfg = C;
-  static VariantSpec limits() { return spec_of<A, C>(); }
+  static VariantSpec spec() { return spec_of<A, C>(); }
 };
 
 template <class... T>
@@ -59,8 +59,8 @@ template <class V>
 std::vector<CaseResult> run_direct(std::vector<Case<typename V::Adapter>> cases,
                                    BenchOptions o = {}) {
   o.mode = "direct";
-  for (const auto& c : cases) validate_case(c, V::limits());
-  Bench<typename V::Adapter> bench(V::limits(), std::move(cases), o, flatten<V>());
+  for (const auto& c : cases) validate_case(c, V::spec());
+  Bench<typename V::Adapter> bench(V::spec(), std::move(cases), o, flatten<V>());
   tb::run_direct<typename V::Adapter, typename V::Cfg>(bench);
   return bench.results();
 }
@@ -71,8 +71,8 @@ template <class V>
 std::vector<CaseResult> run_systemc(std::vector<Case<typename V::Adapter>> cases,
                                     BenchOptions o = {}) {
   o.mode = "systemc";
-  for (const auto& c : cases) validate_case(c, V::limits());
-  Bench<typename V::Adapter> bench(V::limits(), std::move(cases), o, flatten<V>());
+  for (const auto& c : cases) validate_case(c, V::spec());
+  Bench<typename V::Adapter> bench(V::spec(), std::move(cases), o, flatten<V>());
   ScRunControl control;
   ScBench<typename V::Adapter, typename V::Cfg> module("bench", bench, control);
   sc_core::sc_report_handler::set_actions("/OSCI/SystemC", sc_core::SC_INFO,

@@ -30,7 +30,7 @@ TEST_F(LogCli, PaperCaseJsonAndCsv) {
                           json + " --csv " + csv);
   ASSERT_EQ(r.code, 0) << r.err;
   const hwinterp::Json j = hwinterp::Json::parse(slurp(json));
-  // ACCEPTANCE: 152 points, last X 30.2684, MaxErPA = MaxErPAo = 3.9785e-5 at
+  // Paper 001: 152 points, last X 30.2684, MaxErPA = MaxErPAo = 3.9785e-5 at
   // point 1, MaxErPAe = 3.5000e-7 at point 152.
   EXPECT_EQ(j["points"], 152);
   EXPECT_NEAR(j["x_last"].get<double>(), 30.2684, 5e-5);

@@ -37,7 +37,7 @@ const CoreCheck* find_check(const CaseResult& r, const std::string& name) {
 // model on every axis (exactly on it at the n4 variant's 1000 steps/mm and
 // per degree), the exact end point.
 TYPED_TEST(LogStepperLockstep, PaperCurveMakesThePapersPoints) {
-  const VariantSpec l = V<TypeParam>::limits();
+  const VariantSpec l = V<TypeParam>::spec();
   const auto r = run_direct<V<TypeParam>>(A::paper_cases(l, default_settings<A>(l)));
   expect_all_pass(r, 1);
   const CoreCheck* points = find_check(r[0], "point_error_steps");
@@ -54,7 +54,7 @@ TYPED_TEST(LogStepperLockstep, PaperCurveMakesThePapersPoints) {
 // Seeded random parameter sets (tb/cores/log_stepper: short curves over the
 // accepted ranges, random feeds and timing), back to back.
 TYPED_TEST(LogStepperLockstep, RandomParameterSetsRunClean) {
-  const VariantSpec l = V<TypeParam>::limits();
+  const VariantSpec l = V<TypeParam>::spec();
   uint64_t points = 0;
   for (const uint64_t seed : {1u, 2u}) {
     const auto r = run_direct<V<TypeParam>>({random_case<A>(l, 25, seed)});
@@ -108,7 +108,7 @@ Emissions<Cfg> emissions(const A::Command& cmd, uint64_t feed) {
 // 2 (FRAC_W + 1) + 13 clocks (rtl/log_stepper.sv), and the fine stage waits.
 TYPED_TEST(LogStepperLockstep, CoarseEngineTakesTheDocumentedClocksPerCycle) {
   using Core = hls::LogStepper<TypeParam>;
-  const VariantSpec l = V<TypeParam>::limits();
+  const VariantSpec l = V<TypeParam>::spec();
   models::LogStepScale tiny;
   tiny.x_per_mm = tiny.y_per_mm = tiny.z_per_mm = 10;
   tiny.a_per_deg = 2;
@@ -130,7 +130,7 @@ TYPED_TEST(LogStepperLockstep, CoarseEngineTakesTheDocumentedClocksPerCycle) {
 // at full feed the fine stage never waits on the coarse engine (about 100
 // clocks a point).
 TEST(LogStepperFeed, FineStageNeverWaitsOnThePaperCurveAtFullFeed) {
-  const VariantSpec l = V<log_stepper_n4_cfg>::limits();
+  const VariantSpec l = V<log_stepper_n4_cfg>::spec();
   const A::Command cmd = A::make_command({}, {}, l, "test");
   const auto e = emissions<log_stepper_n4_cfg>(cmd, l.full_feed());
   EXPECT_EQ(e.clocks.size(), 152u);
@@ -142,7 +142,7 @@ TEST(LogStepperFeed, FineStageNeverWaitsOnThePaperCurveAtFullFeed) {
 // random stream. Elaborates SystemC (own process).
 TEST(LogStepperSystemc, PaperCurveAndRandomStreamMatchDirect) {
   using Vn = V<log_stepper_n4_cfg>;
-  const VariantSpec l = Vn::limits();
+  const VariantSpec l = Vn::spec();
   std::vector<Case<A>> cases = A::paper_cases(l, default_settings<A>(l));
   cases.push_back(random_case<A>(l, 8, 3));
   const auto direct = run_direct<Vn>(cases);

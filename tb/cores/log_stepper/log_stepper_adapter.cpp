@@ -244,7 +244,7 @@ bool Adapter::job_directive(JobLine<Adapter>& line) {
   if (w.size() > 7)
     s.x_per_mm = s.y_per_mm = s.z_per_mm = cli::parse_real(w[7], line.where + " steps per mm");
   if (w.size() > 8) s.a_per_deg = cli::parse_real(w[8], line.where + " steps per deg");
-  line.command(make_command(p, s, line.limits, line.where));
+  line.command(make_command(p, s, line.spec, line.where));
   return true;
 }
 

@@ -241,7 +241,7 @@ bool Adapter::job_directive(JobLine<Adapter>& line) {
   const std::string& key = w[0];
   if (key == "movefeed") {
     if (w.size() != 2) throw UsageError(line.where + ": 'movefeed' takes one value");
-    line.settings().setup.move_feed = parse_feed(w[1], line.limits, line.where);
+    line.settings().setup.move_feed = parse_feed(w[1], line.spec, line.where);
     if (line.settings().setup.move_feed == 0)
       throw UsageError(line.where + ": movefeed 0 would never move; give a feed > 0");
     return true;
@@ -249,7 +249,7 @@ bool Adapter::job_directive(JobLine<Adapter>& line) {
   if (key != "line" && key != "move" && key != "arc") return false;
   Command c;
   const uint64_t mf = line.current_settings().setup.move_feed;
-  c.feed = static_cast<uint32_t>(mf ? mf : full_feed(line.limits));
+  c.feed = static_cast<uint32_t>(mf ? mf : full_feed(line.spec));
   const models::LatticePoint& at = line.at();
   if (key != "arc") {
     const models::LatticePoint v = line.point(1);
@@ -276,14 +276,14 @@ bool Adapter::job_directive(JobLine<Adapter>& line) {
   c.end = {v[2] - at[px], v[3] - at[py]};
   const std::vector<int64_t> ends = line.integers(7);
   size_t k = 0;
-  for (int i = 0; i < line.limits.axes; ++i) {
+  for (int i = 0; i < line.spec.axes; ++i) {
     if (static_cast<size_t>(i) == px || static_cast<size_t>(i) == py) continue;
     if (k < ends.size()) c.delta[static_cast<size_t>(i)] = ends[k++] - at[static_cast<size_t>(i)];
   }
   if (k < ends.size())
     throw UsageError(line.where + ": 'arc' has " + std::to_string(ends.size()) +
                      " end values for the other axes; there are " +
-                     std::to_string(line.limits.axes - 2));
+                     std::to_string(line.spec.axes - 2));
   c.ops = models::motion_arc_ops(c.center, c.end, c.ccw);
   line.command(c);
   return true;
