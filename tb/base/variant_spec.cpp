@@ -22,6 +22,15 @@ std::string PortSpec::range_text() const {
   return "0.." + std::to_string((uint64_t{1} << width) - 1);
 }
 
+void VariantSpec::check_fits(const std::string& port, int64_t value, const std::string& what,
+                             const std::string& where, const std::string& detail) const {
+  const PortSpec& p = own_port(port);
+  if (!p.fits(value))
+    throw cli::UsageError(where + ": " + what + " " + std::to_string(value) + detail +
+                          " is wider than the " + std::to_string(p.width) + "-bit " + p.name +
+                          " of " + variant + " (limit " + p.range_text() + ")");
+}
+
 std::size_t choose_variant(const std::string& core, const std::vector<VariantSpec>& variants,
                            const VariantChoice& choice) {
   std::string names;

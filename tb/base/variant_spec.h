@@ -61,6 +61,11 @@ struct VariantSpec {
       if (p.name == name) return p;
     throw std::logic_error(variant + " has no input " + name);
   }
+  // `value`, the `what` of a command at `where`, fits one element of own
+  // input `port`; else cli::UsageError "<where>: <what> <value><detail> is
+  // wider than the <W>-bit <port> of <variant> (limit <range>)".
+  void check_fits(const std::string& port, int64_t value, const std::string& what,
+                  const std::string& where, const std::string& detail = "") const;
   uint64_t full_feed() const { return uint64_t{1} << feed_w; }
   uint64_t tim_max() const { return (uint64_t{1} << tim_w) - 1; }
   int64_t pos_max() const { return pos_w >= 64 ? INT64_MAX : (int64_t{1} << (pos_w - 1)) - 1; }

@@ -25,20 +25,14 @@ bool delta_job_directive(JobLine<A>& line) {
   return true;
 }
 
-// Every delta fits the ACC_W-bit signed cmd_delta_i; throws cli::UsageError
-// naming `where`, the axis, the value and the limits.
+// Every delta fits an element of cmd_delta_i (its width and signedness from
+// the core's payload field list); throws cli::UsageError naming `where`, the
+// axis, the value and the limits.
 template <class A>
 void validate_deltas(const typename A::Command& c, const VariantSpec& l, const std::string& where) {
-  const int acc_w = l.param("ACC_W");
-  const int64_t max = (int64_t{1} << (acc_w - 1)) - 1, min = -max - 1;
-  for (int i = 0; i < l.axes; ++i) {
-    const int64_t d = c.delta[static_cast<size_t>(i)];
-    if (d > max || d < min)
-      throw cli::UsageError(where + ": delta " + std::to_string(d) + " on axis " +
-                            std::to_string(i) + " is wider than the " + std::to_string(acc_w) +
-                            "-bit cmd_delta_i of " + l.variant + " (limit " + std::to_string(min) +
-                            ".." + std::to_string(max) + ")");
-  }
+  for (int i = 0; i < l.axes; ++i)
+    l.check_fits("cmd_delta_i", c.delta[static_cast<size_t>(i)], "delta", where,
+                 " on axis " + std::to_string(i));
 }
 
 // One case: a line from `start` to `end` (given for some leading axes; the

@@ -95,30 +95,24 @@ uint64_t Adapter::work(const Command& c, const VariantSpec& l) {
 
 void Adapter::validate(const Command& c, const models::LatticePoint& from, const VariantSpec& l,
                        const std::string& where) {
-  const int acc_w = l.param("ACC_W"), coord_w = l.param("COORD_W"), ops_w = l.param("OPS_W");
   if (c.feed < 1 || c.feed > full_feed(l))
     throw UsageError(where + ": feed word " + std::to_string(c.feed) + " is outside 1.." +
                      std::to_string(full_feed(l)) + " (" + l.variant + ")");
-  const int64_t dmax = signed_max(acc_w);
   for (int i = 0; i < models::kMotionMaxAxes; ++i) {
     const int64_t d = c.delta[static_cast<size_t>(i)];
     if (i >= l.axes && d != 0)
       throw UsageError(where + ": axis " + std::to_string(i) + " moves, but " + l.variant +
                        " has " + std::to_string(l.axes) + " axes");
-    if (d > dmax || d < -dmax - 1)
-      throw UsageError(where + ": delta " + std::to_string(d) + " on axis " + std::to_string(i) +
-                       " is wider than the " + std::to_string(acc_w) + "-bit cmd_delta_i of " +
-                       l.variant);
+    if (i < l.axes) l.check_fits("cmd_delta_i", d, "delta", where, " on axis " + std::to_string(i));
   }
   if (c.kind == MotionKind::kLine) return;
   if (c.plane < 0 || c.plane > 2)
     throw UsageError(where + ": arc plane " + std::to_string(c.plane) +
                      " is not 0 (XY), 1 (ZX) or 2 (YZ)");
-  const int64_t cmax = signed_max(coord_w);
-  for (const int64_t v : {c.center[0], c.center[1], c.end[0], c.end[1]})
-    if (v > cmax || v < -cmax - 1)
-      throw UsageError(where + ": arc coordinate " + std::to_string(v) + " is wider than the " +
-                       std::to_string(coord_w) + "-bit arc coordinates of " + l.variant);
+  for (const int64_t v : {c.center[0], c.center[1]})
+    l.check_fits("cmd_center_i", v, "arc centre offset", where);
+  for (const int64_t v : {c.end[0], c.end[1]})
+    l.check_fits("cmd_end_i", v, "arc end offset", where);
   for (int i = 0; i < l.axes; ++i)
     if (in_plane(c, i) && c.delta[static_cast<size_t>(i)] != 0)
       throw UsageError(where + ": axis " + std::to_string(i) +
@@ -127,9 +121,7 @@ void Adapter::validate(const Command& c, const models::LatticePoint& from, const
   if (c.ops != ops)
     throw UsageError(where + ": arc operations " + std::to_string(c.ops) + " but the arc takes " +
                      std::to_string(ops));
-  if (ops >= (uint64_t{1} << ops_w))
-    throw UsageError(where + ": the arc's " + std::to_string(ops) + " operations do not fit the " +
-                     std::to_string(ops_w) + "-bit cmd_ops_i of " + l.variant);
+  l.check_fits("cmd_ops_i", static_cast<int64_t>(ops), "arc operations", where);
   for (int i = 0; i < l.axes; ++i) {
     const uint64_t mag = static_cast<uint64_t>(std::llabs(c.delta[static_cast<size_t>(i)]));
     if (mag > ops)

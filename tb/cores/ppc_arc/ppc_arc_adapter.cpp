@@ -68,18 +68,10 @@ uint64_t Adapter::work(const Command& c, const VariantSpec&) {
 
 void Adapter::validate(const Command& c, const models::LatticePoint& from, const VariantSpec& l,
                        const std::string& where) {
-  const int w = l.param("COORD_W");
-  const int64_t max = coord_max(l), min = -max - 1;
-  auto fits = [&](int64_t v, const std::string& what) {
-    if (v > max || v < min)
-      throw UsageError(where + ": " + what + " " + std::to_string(v) + " is wider than the " +
-                       std::to_string(w) + "-bit command coordinates of " + l.variant + " (limit " +
-                       std::to_string(min) + ".." + std::to_string(max) + ")");
-  };
-  fits(c.center[0], "centre offset I (centre x - start x)");
-  fits(c.center[1], "centre offset J (centre y - start y)");
-  fits(c.end[0], "end offset (end x - start x)");
-  fits(c.end[1], "end offset (end y - start y)");
+  l.check_fits("cmd_center_i", c.center[0], "centre offset I (centre x - start x)", where);
+  l.check_fits("cmd_center_i", c.center[1], "centre offset J (centre y - start y)", where);
+  l.check_fits("cmd_end_i", c.end[0], "end offset (end x - start x)", where);
+  l.check_fits("cmd_end_i", c.end[1], "end offset (end y - start y)", where);
   // The whole circle, as the position counters see it (from the case start).
   const double rs = norm(c.center[0], c.center[1]);
   const double re = norm(c.end[0] - c.center[0], c.end[1] - c.center[1]);
