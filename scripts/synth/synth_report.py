@@ -3,11 +3,46 @@
 
 Usage: synth_report.py OUT_DIR VARIANT...
 
-Reads, per variant, OUT_DIR/<variant>/: info.tsv and times.tsv (written by
-synth.sh), the Yosys `stat -json` files, the nextpnr logs (the last "Max
-frequency for clock" line is the Fmax; the packer lines give the placed LUTs
-and flip-flops) and nextpnr --report files (utilisation, critical path).
-Writes OUT_DIR/synth.json and OUT_DIR/synth.md and prints the markdown.
+Reads, per variant (or peer), OUT_DIR/<variant>/: info.tsv and times.tsv
+(written by synth.sh), the Yosys `stat -json` files, the nextpnr logs (the last
+"Max frequency for clock" line is the Fmax; the packer lines give the placed
+LUTs and flip-flops) and nextpnr --report files (utilisation, critical path).
+Writes OUT_DIR/synth.json ({"variants": [...], "peers": [...]}: the peers,
+named peer_*, apart, so that a consumer of "variants" sees only hwinterp's
+cores) and OUT_DIR/synth.md, and prints the markdown.
+
+JSON keys per record (besides the iCE40 ones: ice40_core, harness, up5k):
+  tools.yosys_generic     the Yosys of the generic step (Debian's)
+  ecp5                    the ECP5 flow (synth.sh --family ecp5):
+    device, package, speed, tools {yosys, nextpnr}
+    core                  synth_ecp5 of the bare core: lut4 (LUT4 cells), carry
+                          (CCU2C cells, 2 bits each), ff (TRELLIS_FF), dsp
+                          (MULT18X18D), alu54 (ALU54B), bram (DP16KD), lutram
+                          (TRELLIS_DPR16X4), widemux (PFUMX + L6MUX21),
+                          lut4_total (lut4 + 2 carry + 2 lutram: LUT4 sites),
+                          cells_by_type
+    harness               {netlist: the same counts for core + pin harness,
+                          overhead: netlist - core}
+    runs                  per seed: seed, fmax_mhz, target_mhz, met, clock,
+                          comb_used/_available (TRELLIS_COMB: LUT4 sites),
+                          ff_used/_available, io_used/_available, dsp_used,
+                          bram_used, critical_path {from_reg, to_reg (the
+                          first and last flip-flop's register name), from_src,
+                          to_src (its declaration, file:line), from_net,
+                          to_cell (Yosys' automatic names cut before the first
+                          cell-type part), lut_levels, carry_steps, mux_levels,
+                          logic_ns, routing_ns}; or {seed, timeout_s}
+    fmax_min_mhz, fmax_max_mhz
+  peer                    (peers only) how the peer was elaborated: package and
+                          versions, module, configuration, what was replaced,
+                          its ports (scripts/synth/peers/*.py --info)
+  source_sha256           (peers only) SHA-256 of the generated Verilog (peers
+                          have no rtl_sha256)
+
+For scripts/synth/publish.py: render_ecp5_table(records) and
+render_peer_rows(variants, peers) return the ECP5 table and the peers' table with
+the rows "ours / peer" as lists of markdown lines (empty without ECP5 results or
+peers).
 """
 import hashlib
 import json
@@ -52,7 +87,10 @@ def cells(path):
     """Cells by type of the (single, flattened) top module of a Yosys stat -json."""
     with open(path) as f:
         st = json.load(f)
-    return dict(sorted(st["design"]["num_cells_by_type"].items()))
+    # $scopeinfo: newer Yosys (the YoWASP one) keeps a record of each flattened
+    # instance; not a cell of the circuit.
+    return dict(sorted((t, n) for t, n in st["design"]["num_cells_by_type"].items()
+                       if t != "$scopeinfo"))
 
 
 def ice40(by_type):
@@ -64,11 +102,66 @@ def ice40(by_type):
     }
 
 
-def pnr(log_path, report_path):
-    """Fmax, packed LUT/FF and utilisation of one nextpnr run."""
+def ecp5(by_type):
+    """LUT4 / carry / FF / DSP / BRAM of a synth_ecp5 netlist."""
+    n = by_type.get
+    r = {
+        "lut4": n("LUT4", 0),
+        "carry": n("CCU2C", 0),  # two bits (two LUT4 sites) each
+        "ff": n("TRELLIS_FF", 0),
+        "dsp": n("MULT18X18D", 0),
+        "alu54": n("ALU54B", 0),
+        "bram": n("DP16KD", 0),
+        "lutram": n("TRELLIS_DPR16X4", 0),
+        "widemux": n("PFUMX", 0) + n("L6MUX21", 0),
+    }
+    r["lut4_total"] = r["lut4"] + 2 * r["carry"]
+    return r
+
+
+# The cell types Yosys' autoname appends to a name it derives from a neighbour.
+AUTONAME_CUT = re.compile(r"_(?:LUT4|TRELLIS_FF|TRELLIS_COMB|CCU2C|PFUMX|L6MUX21|DP16KD|MULT18X18D|"
+                          r"ALU54B|TRELLIS_DPR16X4)_.*$")
+ECP5_PRE = {
+    "lut4_total": re.compile(r"Total LUT4s:\s*(\d+)/"),
+    "lut4_logic": re.compile(r"logic LUTs:\s*(\d+)/"),
+    "lut4_carry": re.compile(r"carry LUTs:\s*(\d+)/"),
+    "lut4_ram": re.compile(r"RAM LUTs:\s*(\d+)/"),
+    "dff_total": re.compile(r"Total DFFs:\s*(\d+)/"),
+}
+
+
+def reg_at(cell):
+    """('file.sv:LINE', name) of a flip-flop, from its src attribute: synth.sh copies the
+    declaration of the flip-flop's output wire there (file:line.col-line.col of the name,
+    which is read back from the file); ('', '') when there is none."""
+    src = (cell or {}).get("attributes", {}).get("src", "").split("|")[0]
+    m = re.match(r"(.*):(\d+)\.(\d+)-(\d+)\.(\d+)$", src)
+    if not m:
+        return "", ""
+    path, line, c0, line1, c1 = m.group(1), int(m.group(2)), int(m.group(3)), int(m.group(4)), \
+        int(m.group(5))
+    name = ""
+    try:
+        with open(path) as f:
+            text = f.readlines()[line - 1]
+        if line1 == line and re.fullmatch(r"[A-Za-z_]\w*", text[c0 - 1:c1 - 1]):
+            name = text[c0 - 1:c1 - 1]
+    except (OSError, IndexError):
+        pass
+    return "%s:%d" % (os.path.basename(path), line), name
+
+
+def pnr(log_path, report_path, family="ice40", netlist=None):
+    """Fmax, packed LUT/FF and utilisation of one nextpnr run.
+
+    family: "ice40" or "ecp5"; netlist (ECP5): the cells of the placed Yosys JSON,
+    for the RTL lines of the critical path's flip-flops."""
     with open(log_path) as f:
         log = f.read()
     r = {}
+    if family == "ecp5":
+        return pnr_ecp5(log, report_path, netlist or {})
     fm = FMAX.findall(log)
     if fm:  # the last one is after routing; the first is the placer's estimate
         clk, mhz, verdict, target = fm[-1]
@@ -105,6 +198,55 @@ def pnr(log_path, report_path):
                     "routing_ns": round(sum(s["delay"] for s in routing), 2),
                 }
                 break
+    return r
+
+
+def pnr_ecp5(log, report_path, netlist):
+    r = {}
+    fm = FMAX.findall(log)
+    if fm:
+        clk, mhz, verdict, target = fm[-1]
+        r.update(clock=clk, fmax_mhz=float(mhz), target_mhz=float(target), met=verdict == "PASS")
+    for k, rx in ECP5_PRE.items():
+        m = rx.search(log)
+        if m:
+            r[k] = int(m.group(1))
+    names = {"TRELLIS_COMB": "comb", "TRELLIS_FF": "ff", "TRELLIS_IO": "io", "DCCA": "dcca",
+             "MULT18X18D": "dsp", "ALU54B": "alu54", "DP16KD": "bram", "TRELLIS_RAMW": "ramw"}
+    util = re.search(r"Device utilisation:\n((?:Info:.*\n)+)", log)
+    for name, used, avail in re.findall(r"(\w+):\s*(\d+)/\s*(\d+)", util.group(1) if util else ""):
+        if name in names:
+            r[names[name] + "_used"], r[names[name] + "_available"] = int(used), int(avail)
+    if os.path.exists(report_path):
+        with open(report_path) as f:
+            rep = json.load(f)
+        for key, name in names.items():
+            u = rep.get("utilization", {}).get(key)
+            if u:
+                r[name + "_used"], r[name + "_available"] = u["used"], u["available"]
+        for cp in rep.get("critical_paths", []):
+            if cp.get("from") != cp.get("to"):
+                continue
+            segs = cp.get("path", [])
+            routing = [s for s in segs if s.get("type") == "routing"]
+            logic = [s for s in segs if s.get("type") == "logic"]
+            src = segs[0]["from"]["cell"] if segs else ""
+            dst = segs[-1]["to"]["cell"] if segs else ""
+            (from_src, from_reg), (to_src, to_reg) = reg_at(netlist.get(src)), reg_at(netlist.get(dst))
+            r["critical_path"] = {
+                "from_reg": from_reg,
+                "from_src": from_src,
+                "to_reg": to_reg,
+                "to_src": to_src,
+                "from_net": AUTONAME_CUT.sub("", routing[0].get("net", "")) if routing else "",
+                "to_cell": AUTONAME_CUT.sub("", dst),
+                "lut_levels": sum(1 for s in logic if s["to"]["port"] == "F"),
+                "carry_steps": sum(1 for s in logic if s["to"]["port"] == "FCO"),
+                "mux_levels": sum(1 for s in logic if s["to"]["port"] == "OFX"),
+                "logic_ns": round(sum(s["delay"] for s in segs if s.get("type") != "routing"), 2),
+                "routing_ns": round(sum(s["delay"] for s in routing), 2),
+            }
+            break
     return r
 
 
@@ -151,19 +293,54 @@ def rtl_digest(core, root=ROOT):
     return h.hexdigest()
 
 
+def file_digest(path):
+    with open(path, "rb") as f:
+        return hashlib.sha256(f.read()).hexdigest()
+
+
+def seed_runs(vdir, info, family, netlist=None):
+    """The per-seed nextpnr results of one family (hx8k or ecp5)."""
+    runs = []
+    for s in info["seeds"].split():
+        if "%s_timeout_seed%s" % (family, s) in info:
+            runs.append({"seed": int(s), "timeout_s": int(info["%s_timeout_seed%s" % (family, s)])})
+            continue
+        r = pnr(os.path.join(vdir, "pnr_%s_seed%s.log" % (family, s)),
+                os.path.join(vdir, "pnr_%s_seed%s.json" % (family, s)),
+                "ecp5" if family == "ecp5" else "ice40", netlist)
+        r["seed"] = int(s)
+        runs.append(r)
+    return runs
+
+
+def fmax_range(runs):
+    fmaxes = [r["fmax_mhz"] for r in runs if "fmax_mhz" in r]
+    return (min(fmaxes) if fmaxes else None), (max(fmaxes) if fmaxes else None)
+
+
 def variant_result(out, variant):
     vdir = os.path.join(out, variant)
     info = read_tsv(os.path.join(vdir, "info.tsv"))
+    # Results of a synth.sh from before --family: iCE40 unless --generic-only.
+    families = info.get("families", "ice40" if info.get("generic_only") == "0" else "")
+    families = [f for f in families.split(",") if f]
     res = {
         "variant": variant,
         "core": info["core"],
         "params": dict(kv.split("=", 1) for kv in info["params"].split()),
-        "tools": {"yosys": info.get("yosys", ""), "nextpnr": info.get("nextpnr", "")},
+        "families": families,
+        "tools": {"yosys": info.get("yosys", ""), "nextpnr": info.get("nextpnr", ""),
+                  "yosys_generic": info.get("yosys_generic", info.get("yosys", ""))},
         "times_s": read_times(os.path.join(vdir, "times.tsv")),
-        "rtl_sha256": rtl_digest(info["core"]),
         "date": info.get("date", ""),
         "git": info.get("git", ""),
     }
+    if "peer" in info:
+        with open(info["peer"]) as f:
+            res["peer"] = json.load(f)
+        res["source_sha256"] = file_digest(info["peer_source"])
+    else:
+        res["rtl_sha256"] = rtl_digest(info["core"])
     g = cells(os.path.join(vdir, "generic_stat.json"))
     res["generic"] = {
         "cells": sum(g.values()),
@@ -171,25 +348,18 @@ def variant_result(out, variant):
         "cells_by_type": g,
     }
     res["core_io_bits"] = port_bits(os.path.join(vdir, "%s_net.v" % info["core"]))
-    if info.get("generic_only") == "0":
+    if "ice40" in families:
         core = ice40(cells(os.path.join(vdir, "ice40_core_stat.json")))
         hnet = ice40(cells(os.path.join(vdir, "harness_stat.json")))
-        runs = []
-        for s in info["seeds"].split():
-            r = pnr(os.path.join(vdir, "pnr_hx8k_seed%s.log" % s),
-                    os.path.join(vdir, "pnr_hx8k_seed%s.json" % s))
-            r["seed"] = int(s)
-            if "hx8k_timeout_seed%s" % s in info:
-                r = {"seed": int(s), "timeout_s": int(info["hx8k_timeout_seed%s" % s])}
-            runs.append(r)
-        fmaxes = [r["fmax_mhz"] for r in runs if "fmax_mhz" in r]
+        runs = seed_runs(vdir, info, "hx8k")
+        lo, hi = fmax_range(runs)
         res["ice40_core"] = core
         res["harness"] = {
             "netlist": hnet,
             "overhead": {k: hnet[k] - core[k] for k in core},
             "hx8k": runs,
-            "fmax_min_mhz": min(fmaxes) if fmaxes else None,
-            "fmax_max_mhz": max(fmaxes) if fmaxes else None,
+            "fmax_min_mhz": lo,
+            "fmax_max_mhz": hi,
         }
         s0 = info["seeds"].split()[0]
         res["harness"]["hx8k_package_pins"] = package_pins("8k", "ct256")
@@ -200,6 +370,25 @@ def variant_result(out, variant):
         if not up["fits"]:
             up["reason"] = info.get("up5k_reason", "")
         res["up5k"] = up
+    if "ecp5" in families:
+        by_type = cells(os.path.join(vdir, "ecp5_core_stat.json"))
+        core = ecp5(by_type)
+        hnet = ecp5(cells(os.path.join(vdir, "harness_ecp5_stat.json")))
+        with open(os.path.join(vdir, "harness_ecp5.json")) as f:
+            mods = json.load(f)["modules"]
+        top = mods.get("%s_harness" % info["core"], {})
+        runs = seed_runs(vdir, info, "ecp5", top.get("cells", {}))
+        del mods, top
+        lo, hi = fmax_range(runs)
+        res["ecp5"] = {
+            "device": "LFE5U-25F", "package": "CABGA256", "speed": 6,
+            "tools": {"yosys": info.get("ecp5_yosys", ""), "nextpnr": info.get("ecp5_nextpnr", "")},
+            "core": dict(core, cells_by_type=by_type),
+            "harness": {"netlist": hnet, "overhead": {k: hnet[k] - core[k] for k in core}},
+            "runs": runs,
+            "fmax_min_mhz": lo,
+            "fmax_max_mhz": hi,
+        }
     chk = os.path.join(vdir, "netlist_check.log")
     if info.get("check") == "1" and os.path.exists(chk):
         with open(chk) as f:
@@ -210,7 +399,199 @@ def variant_result(out, variant):
     return res
 
 
-def markdown(results):
+def seeds_text(runs):
+    return ", ".join("%.2f (%d)" % (p["fmax_mhz"], p["seed"]) if "fmax_mhz" in p
+                     else "no route in %s s (%d)" % (p.get("timeout_s", "?"), p["seed"])
+                     for p in runs)
+
+
+def short_name(name):
+    """A register or cell name without the pin harness's u_core. prefix and iCE40's _SB_ suffix."""
+    return re.sub(r"_SB_\w+.*$", "", re.sub(r"^u_core\.", "", name))
+
+
+def ecp5_path_text(cp):
+    """The ECP5 critical path, as publish.py writes the iCE40 one (plus RTL lines)."""
+    if not cp:
+        return "-"
+    steps = "%d LUT" % cp["lut_levels"]
+    if cp.get("mux_levels"):
+        steps += " + %d mux" % cp["mux_levels"]
+    if cp["carry_steps"]:
+        steps += " + %d carry" % cp["carry_steps"]
+    def end(reg, src, auto):
+        if reg:
+            return "`%s` (%s)" % (reg, src)
+        return src or "`%s`" % short_name(auto)
+    return "%s -> %s (%s; %.1f ns logic, %.1f ns routing)" % (
+        end(cp.get("from_reg"), cp.get("from_src"), cp["from_net"]),
+        end(cp.get("to_reg"), cp.get("to_src"), cp["to_cell"]), steps, cp["logic_ns"],
+        cp["routing_ns"])
+
+
+def render_ecp5_table(results):
+    """Markdown: the ECP5 table (one row per record with ECP5 results), for synth.md and
+    for scripts/synth/publish.py to call. Returns [] when no record has ECP5 results."""
+    rs = [r for r in results if "ecp5" in r]
+    if not rs:
+        return []
+    e0 = rs[0]["ecp5"]
+    seeds = "/".join(str(p["seed"]) for p in e0["runs"])
+    md = ["| variant | ECP5 core LUT4 / CCU2C / FF / DSP / BRAM | harness placed LUT4 sites / FF "
+          "of %s | Fmax %s-%s, seeds %s (MHz) | Fmax min-max | critical path, first seed: "
+          "from -> to |" % (e0["runs"][0].get("comb_available", "?"), e0["device"], e0["speed"],
+                            seeds),
+          "|---|---|---|---|---|---|"]
+    for r in rs:
+        e = r["ecp5"]
+        c, p0 = e["core"], e["runs"][0]
+        md.append("| `%s` | %d / %d / %d / %d / %d | %s / %s | %s | %s | %s |" % (
+            r["variant"], c["lut4"], c["carry"], c["ff"], c["dsp"], c["bram"],
+            p0.get("comb_used", "?"), p0.get("ff_used", "?"), seeds_text(e["runs"]),
+            "%.2f-%.2f" % (e["fmax_min_mhz"], e["fmax_max_mhz"])
+            if e["fmax_min_mhz"] is not None else "?",
+            ecp5_path_text(p0.get("critical_path"))))
+    return md
+
+
+def axes_of(r):
+    if "peer" in r:
+        return int(r["peer"]["axes"])
+    return int(r["params"].get("AXES", 0)) or None
+
+
+def family_counts(r, family):
+    """LUT4 / carry / FF of the bare core in a family (carry: SB_CARRY or CCU2C cells)."""
+    if family == "ice40":
+        return r.get("ice40_core")
+    return (r.get("ecp5") or {}).get("core")
+
+
+def family_fmin(r, family):
+    if family == "ice40":
+        return (r.get("harness") or {}).get("fmax_min_mhz")
+    return (r.get("ecp5") or {}).get("fmax_min_mhz")
+
+
+def design_key(r):
+    """(design, its parameters but the axes): two records with the same key differ only in
+    their number of axes."""
+    if "peer" in r:
+        return r["peer"]["module"], json.dumps(r["peer"]["config"], sort_keys=True)
+    return r["core"], json.dumps({k: v for k, v in r["params"].items() if k != "AXES"},
+                                 sort_keys=True)
+
+
+def axis_pairs(results):
+    """Per design (core, or peer module), the two records that differ only in their number of
+    axes, with the widest span of axes: {name: (fewer axes, more axes)}."""
+    best = {}
+    for i, a in enumerate(results):
+        for b in results[i + 1:]:
+            if design_key(a) != design_key(b) or not axes_of(a) or not axes_of(b) or \
+                    axes_of(a) == axes_of(b):
+                continue
+            lo, hi = (a, b) if axes_of(a) < axes_of(b) else (b, a)
+            name = a["core"] if "peer" not in a else a["peer"]["module"].rsplit(".", 1)[-1]
+            if name not in best or axes_of(hi) - axes_of(lo) > \
+                    axes_of(best[name][1]) - axes_of(best[name][0]):
+                best[name] = (lo, hi)
+    return best
+
+
+def tool_text(version):
+    """A tool's version line without the build details YoWASP's Yosys prints."""
+    return re.sub(r", Release, .*\)$", ")", version.replace('"', ""))
+
+
+def per_axis(lo, hi, family):
+    """(hi - lo) / (axes of hi - axes of lo) of LUT4, carry, FF; None if a family is missing."""
+    a, b = family_counts(lo, family), family_counts(hi, family)
+    if not a or not b:
+        return None
+    d = axes_of(hi) - axes_of(lo)
+    return {k: (b[k] - a[k]) / d for k in ("lut4", "carry", "ff")}
+
+
+def ratio(x, y):
+    return "%.2f" % (x / y) if x is not None and y else "-"
+
+
+def render_peer_rows(results, peers):
+    """Markdown: the peers' figures per family, their cost per axis, and the rows 'ours / peer'
+    (area per axis, and whole design and Fmax at the peer's axis count), for synth.md and for
+    scripts/synth/publish.py to call. Returns [] without peers."""
+    if not peers:
+        return []
+    fams = [f for f in ("ice40", "ecp5") if any(family_counts(p, f) for p in peers)]
+    names = {"ice40": "iCE40 (HX8K)", "ecp5": "ECP5 (LFE5U-25F-6)"}
+    md = ["| peer | axes | family | core LUT4 / carry / FF / DSP / BRAM | Fmax per seed (MHz) "
+          "| critical path, first seed |", "|---|---|---|---|---|---|"]
+    for p in peers:
+        for f in fams:
+            c = family_counts(p, f)
+            if not c:
+                continue
+            if f == "ice40":
+                runs = p["harness"]["hx8k"]
+                cpt = p["harness"]["hx8k"][0].get("critical_path")
+                path = "`%s` -> `%s` (%d LUT + %d carry; %.1f ns logic, %.1f ns routing)" % (
+                    short_name(cpt["from_net"]), short_name(cpt["to_cell"]), cpt["lut_levels"],
+                    cpt["carry_steps"], cpt["logic_ns"], cpt["routing_ns"]) if cpt else "-"
+            else:
+                runs = p["ecp5"]["runs"]
+                path = ecp5_path_text(runs[0].get("critical_path"))
+            md.append("| `%s` | %d | %s | %d / %d / %d / %d / %d | %s | %s |" % (
+                p["variant"], axes_of(p), names[f], c["lut4"], c["carry"], c["ff"],
+                c.get("dsp", 0), c.get("bram", 0), seeds_text(runs), path))
+    ppair = axis_pairs(peers)
+    ours_pairs = axis_pairs(results)
+    md += ["", "Ours / peer (carry: SB_CARRY cells on iCE40, CCU2C cells of two bits on ECP5; "
+           "per axis = (bigger - smaller variant) / (difference in axes), as for the per-axis "
+           "rows; Fmax: the lowest of the seeds):", "",
+           "| ours | peer | family | what | ours LUT4 / carry / FF | peer LUT4 / carry / FF | "
+           "ratio LUT4 / carry / FF | Fmax ours / peer (MHz) | ratio Fmax |",
+           "|---|---|---|---|---|---|---|---|---|"]
+    for pcore, (plo, phi) in sorted(ppair.items()):
+        for f in fams:
+            pa = per_axis(plo, phi, f)
+            if not pa:
+                continue
+            for core, (lo, hi) in sorted(ours_pairs.items()):
+                oa = per_axis(lo, hi, f)
+                if not oa:
+                    continue
+                md.append("| `%s` (`%s` - `%s`) | `%s` - `%s` | %s | per axis | %s | %s | %s | "
+                          "- | - |" % (
+                              core, hi["variant"], lo["variant"], phi["variant"], plo["variant"],
+                              names[f], " / ".join("%.0f" % oa[k] for k in ("lut4", "carry", "ff")),
+                              " / ".join("%.0f" % pa[k] for k in ("lut4", "carry", "ff")),
+                              " / ".join(ratio(oa[k], pa[k]) for k in ("lut4", "carry", "ff"))))
+        # Whole designs at the axis count of the bigger peer.
+        n = axes_of(phi)
+        for f in fams:
+            pc = family_counts(phi, f)
+            for r in results:
+                c = family_counts(r, f)
+                if not c or axes_of(r) != n:
+                    continue
+                fo, fp = family_fmin(r, f), family_fmin(phi, f)
+                md.append("| `%s` | `%s` | %s | whole, %d axes | %d / %d / %d | %d / %d / %d | %s "
+                          "| %s / %s | %s |" % (
+                              r["variant"], phi["variant"], names[f], n, c["lut4"], c["carry"],
+                              c["ff"], pc["lut4"], pc["carry"], pc["ff"],
+                              " / ".join(ratio(c[k], pc[k]) for k in ("lut4", "carry", "ff")),
+                              "%.2f" % fo if fo is not None else "-",
+                              "%.2f" % fp if fp is not None else "-", ratio(fo, fp)))
+    if not md[-1].startswith("| `"):
+        md[-4:] = ["No ratio: this run has no two variants of a core that differ only in AXES, and "
+                   "none with as many axes as the bigger peer."]
+    return md
+
+
+def markdown(results, peers=()):
+    ours = results
+    results = list(results) + list(peers)
     full = [r for r in results if "harness" in r]
     md = ["# Synthesis results (scripts/synth.sh)", ""]
     head = ["variant", "parameters", "core I/O bits", "generic cells (FF)"]
@@ -280,9 +661,25 @@ def markdown(results):
     for s in steps:
         md.append("| %s | " % s + " | ".join("%.1f" % r["times_s"][s] if s in r["times_s"] else "-"
                                             for r in results) + " |")
+    ecp5_md = render_ecp5_table(results)
+    if ecp5_md:
+        md += ["", "## ECP5", ""] + ecp5_md
+    peer_md = render_peer_rows(ours, peers)
+    if peer_md:
+        md += ["", "## Peers", ""] + peer_md
     notes = ["", "Notes:", ""]
     r0 = results[0]
-    notes.append("- %s; %s." % (r0["tools"]["yosys"], r0["tools"]["nextpnr"] or "nextpnr not run"))
+    sets = {}
+    for r in results:
+        t = r["tools"]
+        key = ("generic: " + tool_text(t.get("yosys_generic") or t["yosys"])) + \
+            ("; iCE40: %s, %s" % (tool_text(t["yosys"]), tool_text(t["nextpnr"]))
+             if "ice40_core" in r else "") + \
+            ("; ECP5: %s, %s" % (tool_text(r["ecp5"]["tools"]["yosys"]),
+                                 tool_text(r["ecp5"]["tools"]["nextpnr"])) if "ecp5" in r else "")
+        sets.setdefault(key, []).append(r["variant"])
+    for key, vs in sets.items():
+        notes.append("- Tools: %s (%s)." % (key, "every row" if len(sets) == 1 else ", ".join(vs)))
     notes.append("- Netlist vs RTL: the Yosys generic netlist and the RTL side by side in Verilator "
                  "on the input frames of a co-simulated random stream with aborts and feed holds "
                  "(`hwinterp cosim --dump-frames`), every output compared on every clock.")
@@ -295,6 +692,20 @@ def markdown(results):
         notes.append("- Fmax: the last \"Max frequency for clock\" line of nextpnr (after routing), "
                      "target %s MHz. UP5K: the same netlist, --up5k --package sg48, first seed." %
                      r0["harness"]["hx8k"][0].get("target_mhz", "?") if "harness" in r0 else "")
+    if ecp5_md:
+        notes.append("- ECP5: YoWASP Yosys `synth_ecp5` of the bare core (core columns; DSP = "
+                     "MULT18X18D, BRAM = DP16KD) and of the same pin harness, placed by "
+                     "nextpnr-ecp5 --25k --package CABGA256 --speed 6 (LFE5U-25F-6BG256C, the "
+                     "Colorlight 5A-75B's part) per seed; placed LUT4 sites = TRELLIS_COMB "
+                     "(logic, carry and wide-function LUT4s). Critical path ends: the register "
+                     "of the first and last flip-flop and the line that declares it (synth.sh "
+                     "copies it onto the flip-flop before abc9, which keeps no register names); "
+                     "mux = PFUMX/L6MUX21 steps of a wide function.")
+    if peer_md:
+        notes.append("- Peers: elaborated from the pinned PyPI packages by their own generator "
+                     "(%s), synthesized and placed by the same steps; never part of hwinterp. "
+                     "%s" % (", ".join(sorted({p["peer"]["package"] for p in peers})),
+                             peers[0]["peer"].get("replaced", "")))
     return "\n".join(md + notes) + "\n"
 
 
@@ -303,11 +714,19 @@ def main(argv):
         sys.stderr.write(__doc__)
         return 2
     out = argv[1]
-    results = [variant_result(out, v) for v in argv[2:]]
+    records = [variant_result(out, v) for v in argv[2:]]
+    results = [r for r in records if "peer" not in r]
+    peers = [r for r in records if "peer" in r]
+    if not results:
+        sys.stderr.write("synth_report: no variant of hwinterp among %s\n" % " ".join(argv[2:]))
+        return 2
+    doc = {"variants": results}
+    if peers:
+        doc["peers"] = peers
     with open(os.path.join(out, "synth.json"), "w") as f:
-        json.dump({"variants": results}, f, indent=2)
+        json.dump(doc, f, indent=2)
         f.write("\n")
-    md = markdown(results)
+    md = markdown(results, peers)
     with open(os.path.join(out, "synth.md"), "w") as f:
         f.write(md)
     sys.stdout.write(md)
