@@ -31,7 +31,7 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from synth_report import ROOT, rtl_digest  # noqa: E402
+from synth_report import ROOT, render_ecp5_table, render_peer_rows, rtl_digest  # noqa: E402
 
 PUBLISHED = os.path.join(ROOT, "docs", "synth.json")
 # The page with the synthesis table, and every page that may hold synth-columns blocks.
@@ -50,6 +50,11 @@ COLUMNS_RE = re.compile(r"<!-- synth-columns: ([\w ]+); written by scripts/synth
 # aim is 40 MHz (issue 9).
 TARGET_MHZ = {"log_stepper": 40.0}
 DEFAULT_TARGET_MHZ = 100.0
+# ECP5 (issue 27): the fine cores at 150 MHz at every seed; log_stepper's aim is points per
+# second, not a clock (None: no target).
+ECP5_TARGET_MHZ = {"log_stepper": None}
+DEFAULT_ECP5_TARGET_MHZ = 150.0
+REQUIREMENTS = os.path.join(ROOT, "scripts", "requirements.txt")
 
 
 def fail(msg, code=2):
@@ -58,6 +63,7 @@ def fail(msg, code=2):
 
 
 def load(path):
+    """(variants, peers) of a synth.json."""
     try:
         with open(path) as f:
             d = json.load(f)
@@ -65,7 +71,17 @@ def load(path):
         fail("cannot read %s: %s" % (path, e))
     if not isinstance(d, dict) or not isinstance(d.get("variants"), list):
         fail("%s has no 'variants' list" % path)
-    return d["variants"]
+    return d["variants"], d.get("peers", [])
+
+
+def pinned(package):
+    """The version scripts/requirements.txt pins for `package`, or None."""
+    with open(REQUIREMENTS) as f:
+        for line in f:
+            m = re.match(r"^\s*([A-Za-z0-9_.-]+)==(\S+)", line)
+            if m and m.group(1).lower() == package.lower():
+                return m.group(2)
+    return None
 
 
 def short(name):
@@ -89,6 +105,36 @@ def target(r):
     return TARGET_MHZ.get(r["core"], DEFAULT_TARGET_MHZ)
 
 
+def ecp5_target(r):
+    return ECP5_TARGET_MHZ.get(r["core"], DEFAULT_ECP5_TARGET_MHZ)
+
+
+def ecp5_section(results, peers):
+    """ECP5 (every variant with ECP5 results) and the peers beside, with the ratios."""
+    out = []
+    table = render_ecp5_table(results)
+    if table:
+        e0 = next(r["ecp5"] for r in results if "ecp5" in r)
+        missed = []
+        for r in results:
+            t = ecp5_target(r)
+            e = r.get("ecp5")
+            if t is None or e is None:
+                continue
+            if e.get("fmax_min_mhz") is None or e["fmax_min_mhz"] < t or \
+                    not all("fmax_mhz" in p for p in e["runs"]):
+                missed.append(r["variant"])
+        out += ["", "ECP5 (%s, %s, speed %s; %s, %s):" % (
+            e0["device"], e0["package"], e0["speed"], e0["tools"]["yosys"], e0["tools"]["nextpnr"]),
+            ""] + table
+        out += ["", "ECP5 target (%d MHz at every seed) missed by: %s." % (
+            DEFAULT_ECP5_TARGET_MHZ, ", ".join("`%s`" % v for v in missed) or "none")]
+    rows = render_peer_rows(results, peers)
+    if rows:
+        out += ["", "The peers, measured by the same script in the same flow:", ""] + rows
+    return out
+
+
 def per_axis_rows(results):
     """LUT4/carry/FF per axis from two variants of one core that differ only in AXES."""
     rows = []
@@ -110,7 +156,7 @@ def per_axis_rows(results):
     return rows
 
 
-def render(results):
+def render(results, peers=()):
     seeds = sorted({p["seed"] for r in results for p in r["harness"]["hx8k"]})
     out = [BEGIN, "",
            "| variant | iCE40 core LUT4 / CARRY / FF / BRAM | HX8K Fmax, seeds %s (MHz) | target |"
@@ -139,8 +185,9 @@ def render(results):
     if axis:
         out += ["", "Per axis (two variants of a core that differ only in `AXES`):", "",
                 "| core | from | LUT4 / CARRY / FF per axis |", "|---|---|---|"] + axis
-    out += ["", "Target missed by: %s." % (", ".join("`%s`" % v for v in missed) or "none"),
-            "", END]
+    out += ["", "Target missed by: %s." % (", ".join("`%s`" % v for v in missed) or "none")]
+    out += ecp5_section(results, peers)
+    out += ["", END]
     return "\n".join(out)
 
 
@@ -160,8 +207,16 @@ def render_columns(names, by_name):
            "| HX8K Fmax, seeds %s (MHz) | %s |" % (
                "/".join(str(p["seed"]) for p in rs[0]["harness"]["hx8k"]), " | ".join(
                    " / ".join("%.2f" % p["fmax_mhz"] if "fmax_mhz" in p else "no route"
-                              for p in r["harness"]["hx8k"]) for r in rs)),
-           "", "<!-- end synth-columns -->"]
+                              for p in r["harness"]["hx8k"]) for r in rs))]
+    if all("ecp5" in r for r in rs):
+        out += ["| ECP5 core LUT4 / CCU2C / FF | %s |" % " | ".join(
+                    "%d / %d / %d" % (r["ecp5"]["core"]["lut4"], r["ecp5"]["core"]["carry"],
+                                      r["ecp5"]["core"]["ff"]) for r in rs),
+                "| ECP5 Fmax, seeds %s (MHz) | %s |" % (
+                    "/".join(str(p["seed"]) for p in rs[0]["ecp5"]["runs"]), " | ".join(
+                        " / ".join("%.2f" % p["fmax_mhz"] if "fmax_mhz" in p else "no route"
+                                   for p in r["ecp5"]["runs"]) for r in rs))]
+    out += ["", "<!-- end synth-columns -->"]
     return "\n".join(out)
 
 
@@ -210,14 +265,20 @@ def main(argv):
     if check and inputs:
         fail("--check takes no SYNTH_JSON (it writes nothing)")
 
-    published = load(PUBLISHED) if os.path.exists(PUBLISHED) else []
+    published, published_peers = load(PUBLISHED) if os.path.exists(PUBLISHED) else ([], [])
     by_name = {r["variant"]: r for r in published}
+    peer_by_name = {p["variant"]: p for p in published_peers}
     for path in inputs:
-        for r in load(path):
+        variants, peers = load(path)
+        for r in variants:
             if "harness" not in r:
                 fail("%s: %s is a --generic-only result (no iCE40 figures); run synth.sh "
                      "without --generic-only" % (path, r.get("variant")))
             by_name[r["variant"]] = r
+        for p in peers:
+            if "harness" in p:
+                peer_by_name[p["variant"]] = p
+    peers = [peer_by_name[v] for v in sorted(peer_by_name)]
     # Without --variants, the published order (then new variants by name), so a
     # plain merge renders the table as a --check --variants run does.
     order = read_variants(vfile) if vfile else \
@@ -232,6 +293,14 @@ def main(argv):
                      "its synth.json)" % (v, v) for v in order if v not in by_name]
         problems += ["%s: published but not a variant of cmake/cores.cmake" % v
                      for v in by_name if v not in order]
+    for p in peers:
+        info = p.get("peer") or {}
+        versions = dict([info.get("package", "").split()] if info.get("package") else [])
+        versions.update({k: info[k] for k in ("litex", "migen") if k in info})
+        for pkg, version in sorted(versions.items()):
+            if pinned(pkg) not in (None, version):
+                problems.append("%s: measured with %s %s, scripts/requirements.txt pins %s: "
+                                "synthesize it again" % (p["variant"], pkg, version, pinned(pkg)))
     for r in results:
         now = rtl_digest(r["core"])
         if r.get("rtl_sha256") != now:
@@ -240,7 +309,7 @@ def main(argv):
                                                               (r.get("rtl_sha256") or "none")[:12],
                                                               now[:12]))
     head, section, tail = table_parts()
-    table = render(results) if results else BEGIN + "\n" + END
+    table = render(results, peers) if results else BEGIN + "\n" + END
     by_variant = {r["variant"]: r for r in results}
     others = [p for p in column_docs() if os.path.abspath(p) != os.path.abspath(TABLE_DOC)]
     if check:
@@ -261,7 +330,7 @@ def main(argv):
         return 1 if problems else 0
     if inputs:
         with open(PUBLISHED, "w") as f:
-            json.dump({"variants": results}, f, indent=2)
+            json.dump({"variants": results, "peers": peers}, f, indent=2)
             f.write("\n")
     with open(TABLE_DOC, "w") as f:
         f.write(with_columns(head, by_variant) + table + with_columns(tail, by_variant))
