@@ -152,6 +152,33 @@ def reg_at(cell):
     return "%s:%d" % (os.path.basename(path), line), name
 
 
+def fmax(log):
+    """The routed Fmax of a nextpnr log (the last report; the first is the placer's estimate)."""
+    fm = FMAX.findall(log)
+    if not fm:
+        return {}
+    clk, mhz, verdict, target = fm[-1]
+    return dict(clock=clk, fmax_mhz=float(mhz), target_mhz=float(target), met=verdict == "PASS")
+
+
+def clock_path(rep, lut, carry, mux=None):
+    """The register-to-register critical path of a nextpnr report: its segments, the levels
+    of logic by the output port they end on (lut, carry, mux), the logic and routing ns."""
+    for cp in rep.get("critical_paths", []):
+        if cp.get("from") != cp.get("to"):
+            continue
+        segs = cp.get("path", [])
+        routing = [s for s in segs if s.get("type") == "routing"]
+        ports = [s["to"]["port"] for s in segs if s.get("type") == "logic"]
+        counts = {"lut_levels": ports.count(lut), "carry_steps": ports.count(carry)}
+        if mux:
+            counts["mux_levels"] = ports.count(mux)
+        counts["logic_ns"] = round(sum(s["delay"] for s in segs if s.get("type") != "routing"), 2)
+        counts["routing_ns"] = round(sum(s["delay"] for s in routing), 2)
+        return segs, (routing[0].get("net", "") if routing else ""), counts
+    return None
+
+
 def pnr(log_path, report_path, family="ice40", netlist=None):
     """Fmax, packed LUT/FF and utilisation of one nextpnr run.
 
@@ -162,10 +189,7 @@ def pnr(log_path, report_path, family="ice40", netlist=None):
     r = {}
     if family == "ecp5":
         return pnr_ecp5(log, report_path, netlist or {})
-    fm = FMAX.findall(log)
-    if fm:  # the last one is after routing; the first is the placer's estimate
-        clk, mhz, verdict, target = fm[-1]
-        r.update(clock=clk, fmax_mhz=float(mhz), target_mhz=float(target), met=verdict == "PASS")
+    r.update(fmax(log))
     pk = {k: int(m.group(1)) for k, rx in PACK.items() for m in [rx.search(log)] if m}
     if {"lut_only", "lut_dff", "dff_only"} <= pk.keys():
         r["lut4"] = pk["lut_only"] + pk["lut_dff"]
@@ -184,29 +208,16 @@ def pnr(log_path, report_path, family="ice40", netlist=None):
             if key in u:
                 r[name + "_used"] = u[key]["used"]
                 r[name + "_available"] = u[key]["available"]
-        for cp in rep.get("critical_paths", []):
-            if cp.get("from") == cp.get("to"):  # the register-to-register path of the clock
-                segs = cp.get("path", [])
-                routing = [s for s in segs if s.get("type") == "routing"]
-                logic = [s for s in segs if s.get("type") == "logic"]
-                r["critical_path"] = {
-                    "from_net": routing[0].get("net", "") if routing else "",
-                    "to_cell": segs[-1]["to"]["cell"] if segs else "",
-                    "lut_levels": sum(1 for s in logic if s["to"]["port"] == "O"),
-                    "carry_steps": sum(1 for s in logic if s["to"]["port"] == "COUT"),
-                    "logic_ns": round(sum(s["delay"] for s in segs if s.get("type") != "routing"), 2),
-                    "routing_ns": round(sum(s["delay"] for s in routing), 2),
-                }
-                break
+        path = clock_path(rep, "O", "COUT")
+        if path:
+            segs, from_net, counts = path
+            r["critical_path"] = dict(from_net=from_net,
+                                      to_cell=segs[-1]["to"]["cell"] if segs else "", **counts)
     return r
 
 
 def pnr_ecp5(log, report_path, netlist):
-    r = {}
-    fm = FMAX.findall(log)
-    if fm:
-        clk, mhz, verdict, target = fm[-1]
-        r.update(clock=clk, fmax_mhz=float(mhz), target_mhz=float(target), met=verdict == "PASS")
+    r = fmax(log)
     for k, rx in ECP5_PRE.items():
         m = rx.search(log)
         if m:
@@ -224,29 +235,15 @@ def pnr_ecp5(log, report_path, netlist):
             u = rep.get("utilization", {}).get(key)
             if u:
                 r[name + "_used"], r[name + "_available"] = u["used"], u["available"]
-        for cp in rep.get("critical_paths", []):
-            if cp.get("from") != cp.get("to"):
-                continue
-            segs = cp.get("path", [])
-            routing = [s for s in segs if s.get("type") == "routing"]
-            logic = [s for s in segs if s.get("type") == "logic"]
+        path = clock_path(rep, "F", "FCO", "OFX")
+        if path:
+            segs, from_net, counts = path
             src = segs[0]["from"]["cell"] if segs else ""
             dst = segs[-1]["to"]["cell"] if segs else ""
             (from_src, from_reg), (to_src, to_reg) = reg_at(netlist.get(src)), reg_at(netlist.get(dst))
-            r["critical_path"] = {
-                "from_reg": from_reg,
-                "from_src": from_src,
-                "to_reg": to_reg,
-                "to_src": to_src,
-                "from_net": AUTONAME_CUT.sub("", routing[0].get("net", "")) if routing else "",
-                "to_cell": AUTONAME_CUT.sub("", dst),
-                "lut_levels": sum(1 for s in logic if s["to"]["port"] == "F"),
-                "carry_steps": sum(1 for s in logic if s["to"]["port"] == "FCO"),
-                "mux_levels": sum(1 for s in logic if s["to"]["port"] == "OFX"),
-                "logic_ns": round(sum(s["delay"] for s in segs if s.get("type") != "routing"), 2),
-                "routing_ns": round(sum(s["delay"] for s in routing), 2),
-            }
-            break
+            r["critical_path"] = dict(from_reg=from_reg, from_src=from_src, to_reg=to_reg,
+                                      to_src=to_src, from_net=AUTONAME_CUT.sub("", from_net),
+                                      to_cell=AUTONAME_CUT.sub("", dst), **counts)
     return r
 
 
