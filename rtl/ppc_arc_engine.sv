@@ -59,7 +59,7 @@
 // Every output is a function of the registers and run_i (none of advance_i).
 // hls/ppc_arc_engine.h is the same engine in C++.
 module ppc_arc_engine #(
-  parameter int COORD_W = 24  // width of the command's signed coordinates
+  parameter int COORD_W = 24  // width of the command's signed coordinates (3..60)
 ) (
   input  logic                 clk_i,         // clock
   input  logic                 rst_ni,        // asynchronous, active low
@@ -74,6 +74,16 @@ module ppc_arc_engine #(
   output logic [1:0]           want_dir_o,    // the axis's direction, 1: negative (x bit 0)
   output logic                 last_o         // this clock's operation is the command's last
 );
+  // Parameter check at elaboration: Verilator and Yosys stop with the message
+  // (Icarus 11 has no elaboration system tasks: it skips the check). The
+  // range is the HLS face's (hls/ppc_arc_engine.h), and so the lockstep
+  // verification's.
+`ifndef __ICARUS__
+  if (COORD_W < 3 || COORD_W > 60) begin : g_bad_coord_w
+    $error("ppc_arc_engine: parameter COORD_W must be 3..60");
+  end
+`endif
+
   localparam int PW = COORD_W + 1;  // s, e, a = p m
   localparam int GW = COORD_W + 2;  // g = (e - p) m
   localparam int FW = COORD_W + 2;  // F = |p|^2 - |s|^2
@@ -324,4 +334,5 @@ module ppc_arc_engine #(
       gone_q <= gone_d;
     end
   end
+
 endmodule
