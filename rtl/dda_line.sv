@@ -368,4 +368,54 @@ module dda_line #(
   assign busy_o = act_q || a_valid_q || b_valid_q || (|step_o);
   assign done_o = done_q;
 
+`ifdef FORMAL
+  // ---------------------------------------------------------------------------
+  // Formal (scripts/formal.sh, rtl/formal/dda_line_props.sv): the port
+  // contract every core shares (rtl/formal/core_contract.sv) with the
+  // commands buffers A and B and the engine hold, and the invariants of the
+  // registers it rests on (each a register kept equal to what it stands for).
+  logic [1:0] f_held;  // also read by log_stepper's proof (scripts/formal.sh links it)
+  assign f_held = 2'(a_valid_q) + 2'(b_valid_q) + 2'(act_q);
+
+  core_contract #(
+    .AXES  (AXES),
+    .TIM_W (TIM_W),
+    .CAP   (3),
+    .HELD_W(2)
+  ) u_contract (
+    .clk_i,
+    .rst_ni,
+    .cmd_valid_i,
+    .cmd_ready_o,
+    .abort_i,
+    .step_len_i,
+    .step_o,
+    .busy_o,
+    .done_o,
+    .held_i(f_held)
+  );
+
+  // Progress: while a command runs with full feed (feed_i >= 2^FEED_W on the
+  // clock before) and no abort, the engine advances on every clock but one on
+  // which an axis its iteration steps is not ready: it waits for the step/dir
+  // timing only, and rtl/formal/stepdir_axis_props.sv proves that ready_o waits
+  // for exactly that (never longer; dir_o turns as soon as the hold allows).
+  logic f_full_q, f_full_d;
+  assign f_full_d = feed_i[FEED_W];
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) f_full_q <= 1'b0;
+    else f_full_q <= f_full_d;
+  end
+
+  always_comb begin
+    if (rst_ni) begin
+      a_progress: assert(!(act_q && f_full_q && !abort_i) || advance || (carry & ~unused_ready) != '0);
+      a_pre_load: assert(pre_load_q == (b_valid_q && (!act_q || left_zero_q)));
+      a_tick: assert(!tick || act_q);
+      a_left: assert(!act_q || (left_zero_q == (left_q == '0) && left_one_q == (left_q == ACC_W'(1))));
+      a_b_low: assert(!b_valid_q || (b_low_zero_q == (b_low_q == '0) &&
+                                     b_low_one_q == (b_low_q == ACC_W'(1))));
+    end
+  end
+`endif
 endmodule

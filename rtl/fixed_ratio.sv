@@ -324,6 +324,10 @@ module fixed_ratio #(
     end
   end
 
+`ifdef FORMAL
+  // Per axis: the flag registers equal the compares they stand for (below).
+  logic [AXES-1:0] f_cnt_ok;
+`endif
 
   // ---------------------------------------------------------------------------
   // Per-axis slices: the magnitude of the offered delta, its buffer entry and
@@ -436,6 +440,10 @@ module fixed_ratio #(
     assign rate_d    = buf_take ? rate_load : rate_q;
     assign neg_d     = buf_take ? buf_neg_q : neg_q;
     assign major_d   = buf_take ? is_max[i] : major_q;
+`ifdef FORMAL
+    assign f_cnt_ok[i] = left_q == (cnt_q != '0) && one_q == (cnt_q == ACC_W'(1)) &&
+                         buf_nz_q == (buf_mag_q != '0) && buf_one_q == (buf_mag_q == ACC_W'(1));
+`endif
 
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
@@ -499,4 +507,52 @@ module fixed_ratio #(
   assign busy_o = act_q || buf_valid_q || (|step_o);
   assign done_o = done_q;
 
+`ifdef FORMAL
+  // ---------------------------------------------------------------------------
+  // Formal (scripts/formal.sh, rtl/formal/fixed_ratio_props.sv): the port
+  // contract every core shares (rtl/formal/core_contract.sv) with the
+  // commands the buffer (with its division) and the engine hold, and the invariants of the
+  // registers it rests on.
+  logic [1:0] f_held;
+  assign f_held = 2'(buf_valid_q) + 2'(act_q);
+
+  core_contract #(
+    .AXES  (AXES),
+    .TIM_W (TIM_W),
+    .CAP   (2),
+    .HELD_W(2)
+  ) u_contract (
+    .clk_i,
+    .rst_ni,
+    .cmd_valid_i,
+    .cmd_ready_o,
+    .abort_i,
+    .step_len_i,
+    .step_o,
+    .busy_o,
+    .done_o,
+    .held_i(f_held)
+  );
+
+  // Progress: while a command runs with full feed (feed_i >= 2^FEED_W on the
+  // clock before) and no abort, the engine advances on every clock but one on
+  // which an axis its tick steps is not ready: it waits for the step/dir timing
+  // only, and rtl/formal/stepdir_axis_props.sv proves that ready_o waits for
+  // exactly that (never longer; dir_o turns as soon as the hold allows).
+  logic f_full_q, f_full_d;
+  assign f_full_d = feed_i[FEED_W];
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) f_full_q <= 1'b0;
+    else f_full_q <= f_full_d;
+  end
+
+  always_comb begin
+    if (rst_ni) begin
+      a_progress: assert(!(act_q && f_full_q && !abort_i) || advance || (must & ~unused_ready) != '0);
+      a_tick: assert(!tick || act_q);
+      // The flag registers equal the compares they stand for.
+      a_cnt_flags: assert(f_cnt_ok == '1 && div_last_q == (div_left_q == DivW'(1)));
+    end
+  end
+`endif
 endmodule

@@ -547,4 +547,73 @@ module log_stepper #(
   assign busy_o      = act_q || seg_valid_q || fine_busy;
   assign done_o      = fine_done && tag_q[0];
 
+`ifdef FORMAL
+  // ---------------------------------------------------------------------------
+  // Formal (scripts/formal.sh, rtl/formal/log_stepper_props.sv): the port
+  // contract every core shares (rtl/formal/core_contract.sv), a command
+  // being a curve: it is held from its take until the done_o of its last
+  // segment, by the coarse engine (act_q) while it is computed, then by its
+  // last segment, in the segment register or in the fine stage (a tag set).
+  // The fine stage's own contract counts the segments it holds (u_fine's
+  // f_held, which scripts/formal.sh connects to f_fine_held after
+  // flattening: Yosys 0.23 has no hierarchical references); the tags follow
+  // them one for one.
+  logic [1:0] f_fine_held;  // u_fine.f_held, connected by scripts/formal.sh
+  logic [3:0] f_seq;  // the segments in flight, oldest first: the tags, then the segment register
+  logic [2:0] f_n;  // how many
+  logic [2:0] f_held, f_lasts;
+  logic       f_young;  // the youngest segment in flight ends its curve (1 when none)
+  logic       f_young_none;  // no segment in flight
+  logic [19:0] f_ent;  // rom(pc_q)
+  assign f_ent = rom(pc_q);
+  always_comb begin
+    f_seq = 4'(tag_q & ((3'd1 << tag_n_q) - 3'd1));
+    f_n   = 3'(tag_n_q);
+    if (seg_valid_q) begin
+      f_seq[tag_n_q] = seg_last_q;
+      f_n            = f_n + 3'd1;
+    end
+    f_lasts = 3'(f_seq[0]) + 3'(f_seq[1]) + 3'(f_seq[2]) + 3'(f_seq[3]);
+    f_young = (f_n == '0) || f_seq[f_n - 3'd1];
+    f_young_none = f_n == '0;
+    f_held  = 3'(act_q) + f_lasts - 3'(done_o);
+  end
+
+  core_contract #(
+    .AXES  (AXES),
+    .TIM_W (TIM_W),
+    .CAP   (3),
+    .HELD_W(3)
+  ) u_contract (
+    .clk_i,
+    .rst_ni,
+    .cmd_valid_i,
+    .cmd_ready_o,
+    .abort_i,
+    .step_len_i,
+    .step_o,
+    .busy_o,
+    .done_o,
+    .held_i(f_held)
+  );
+
+  always_comb begin
+    if (rst_ni) begin
+      // The tags follow the fine stage's segments one for one (a segment's
+      // tag goes on the clock after its done).
+      a_tags: assert(tag_n_q == f_fine_held + 2'(fine_done));
+      // A segment that does not end its curve is followed by one of the same
+      // curve, or the curve is still being computed; one that ends its curve
+      // by the first of a later curve (every curve has two segments or more).
+      a_young: assert(f_young || act_q);
+      a_order: assert(!(f_seq[0] && f_seq[1]) && !(f_seq[1] && f_seq[2]) &&
+                      !(f_seq[2] && f_seq[3]));
+      // The program: the decoded operation is the one at pc_q, and a curve
+      // whose predecessor's last segment is still the youngest in flight has
+      // not yet passed its first (odd) point.
+      a_pc: assert(pc_q <= 6'd42 && op == f_ent[19:17] && sh == f_ent[1:0]);
+      a_first: assert(!act_q || f_young_none || !f_young || pc_q <= 6'd33);
+    end
+  end
+`endif
 endmodule

@@ -478,4 +478,53 @@ module motion_top #(
   assign busy_o = act_q || a_valid_q || b_valid_q || (|step_o);
   assign done_o = done_q;
 
+`ifdef FORMAL
+  // ---------------------------------------------------------------------------
+  // Formal (scripts/formal.sh, rtl/formal/motion_top_props.sv): the port
+  // contract every core shares (rtl/formal/core_contract.sv) with the
+  // commands buffers A and B and the engine hold, and the invariants of the
+  // registers it rests on.
+  logic [1:0] f_held;
+  assign f_held = 2'(a_valid_q) + 2'(b_valid_q) + 2'(act_q);
+
+  core_contract #(
+    .AXES  (AXES),
+    .TIM_W (TIM_W),
+    .CAP   (3),
+    .HELD_W(2)
+  ) u_contract (
+    .clk_i,
+    .rst_ni,
+    .cmd_valid_i,
+    .cmd_ready_o,
+    .abort_i,
+    .step_len_i,
+    .step_o,
+    .busy_o,
+    .done_o,
+    .held_i(f_held)
+  );
+
+  logic [FEED_W:0] f_feed;  // u_feed's feed_i
+  assign f_feed = hold_q ? '0 : (pre_load ? b_feed_q : feed_q);
+  // Progress: while a command runs with full feed (the feed word the feed
+  // accumulator samples >= 2^FEED_W on the clock before) and no abort, the
+  // engine advances on every clock but one on which an axis its operation steps
+  // is not ready: it waits for the step/dir timing only, and
+  // rtl/formal/stepdir_axis_props.sv proves that ready_o waits for exactly that
+  // (never longer; dir_o turns as soon as the hold allows).
+  logic f_full_q, f_full_d;
+  assign f_full_d = f_feed[FEED_W];
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) f_full_q <= 1'b0;
+    else f_full_q <= f_full_d;
+  end
+
+  always_comb begin
+    if (rst_ni) begin
+      a_progress: assert(!(act_q && f_full_q && !abort_i) || advance || (carry & ~ready) != '0);
+      a_tick: assert(!tick || act_q);
+    end
+  end
+`endif
 endmodule

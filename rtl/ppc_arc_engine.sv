@@ -335,4 +335,28 @@ module ppc_arc_engine #(
     end
   end
 
+`ifdef FORMAL
+  // Formal (scripts/formal.sh, in ppc_arc's and motion_top's proofs): each
+  // flag equals the compare of the register it stands for, at every clock
+  // while no g has been the most negative GW-bit value (where g - 1 and -g
+  // wrap; no command the widths above accept comes near it, but the proof
+  // has no bound on g: the circle is not in the state).
+  localparam logic [GW-1:0] GMin = {1'b1, {(GW - 1) {1'b0}}};
+  logic f_g_ok, f_g_ok_q, f_g_ok_d;
+  assign f_g_ok   = f_g_ok_q && gx_q != GMin && gy_q != GMin;
+  assign f_g_ok_d = f_g_ok;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) f_g_ok_q <= 1'b1;
+    else f_g_ok_q <= f_g_ok_d;
+  end
+  always_comb begin
+    if (rst_ni) begin
+      a_arc_flags: assert(!f_g_ok || (
+          am1_q == {ay_q == PMinus1, ax_q == PMinus1} &&
+          gz_q == {gy_q == '0, gx_q == '0} &&
+          gone_q == {gy_q == GW'(1), gx_q == GW'(1)} &&
+          gle0_q == {gy_q[GW-1] || gy_q == '0, gx_q[GW-1] || gx_q == '0}));
+    end
+  end
+`endif
 endmodule

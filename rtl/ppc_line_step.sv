@@ -136,4 +136,27 @@ module ppc_line_step #(
     end
   end
 
+`ifdef FORMAL
+  // Formal (scripts/formal.sh, in ppc_line's and ppc_arc's proofs): each
+  // flag equals the reduction of the counters it stands for, at every clock
+  // since a load whose flags were the reductions of the load (the caller's
+  // promise: ppc_line passes the reductions themselves; ppc_arc_engine its
+  // flags of g, equal to them for every command its widths accept).
+  logic           f_ld_ok, f_ld_ok_q, f_ld_ok_d;
+  logic [MAG_W:0] f_total;  // steps left in total
+  assign f_ld_ok   = load_nz_i == {load_ay_i != '0, load_ax_i != '0} &&
+                     load_le1_i == {load_ay_i <= MAG_W'(1), load_ax_i <= MAG_W'(1)};
+  assign f_ld_ok_d = load_i ? f_ld_ok : f_ld_ok_q;
+  assign f_total   = {1'b0, xl_q} + {1'b0, yl_q};
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) f_ld_ok_q <= 1'b1;
+    else f_ld_ok_q <= f_ld_ok_d;
+  end
+  always_comb begin
+    if (rst_ni) begin
+      a_flags: assert(!f_ld_ok_q || (x_left_q == (xl_q != '0) && y_left_q == (yl_q != '0) &&
+                                     last_q == (f_total <= (MAG_W + 1)'(1))));
+    end
+  end
+`endif
 endmodule

@@ -243,4 +243,23 @@ module stepdir_axis #(
   assign step_o = step_q;
   assign dir_o  = dir_q;
 
+`ifdef FORMAL
+  // Formal (scripts/formal.sh): the engine's side of the contract above, an
+  // assumption in rtl/formal/stepdir_axis_props.sv and step_stage_props.sv,
+  // proved in every core's proof: the engine fires only a ready axis, and
+  // with READY_Q = 1 its want_dir_next_i was right (from the second clock
+  // after reset; on the first ready_o is low).
+  logic f_want_dir_next_q, f_want_dir_next_d;
+  assign f_want_dir_next_d = want_dir_next_i;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) f_want_dir_next_q <= 1'b0;
+    else f_want_dir_next_q <= f_want_dir_next_d;
+  end
+  always_comb begin
+    if (rst_ni) begin
+      a_fire_ready: assert(!fire_i || ready_o);
+      a_dir_next: assert(!READY_Q || fresh_i || want_dir_i == f_want_dir_next_q);
+    end
+  end
+`endif
 endmodule
