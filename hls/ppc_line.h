@@ -30,7 +30,7 @@ class PpcLine {
   static constexpr int TIM_W = Cfg::TIM_W;
   static constexpr int FEED_W = Cfg::FEED_W;
   static_assert(AXES == 2, "PPC is a planar method: AXES must be 2");
-  static_assert(ACC_W >= 2 && ACC_W <= 62, "ACC_W out of range");
+  static_assert(ACC_W >= 3 && ACC_W <= 62, "ACC_W out of range (rtl/ppc_line.sv: 3..62)");
   static_assert(POS_W >= 2 && POS_W <= 64, "POS_W out of range");
 
   using acc_t = sc_dt::sc_uint<ACC_W>;

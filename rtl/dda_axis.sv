@@ -25,7 +25,7 @@
 // and the running registers. The clock's late signals (ld_i, en_i) only
 // enable registers.
 module dda_axis #(
-  parameter int W          = 32,  // magnitude and accumulator width
+  parameter int W          = 32,  // magnitude and accumulator width (>= 2)
   parameter bit MODULUS_2N = 1    // 1: modulus 2^n with the high mask; 0: general modulus
 ) (
   input  logic         clk_i,
@@ -40,17 +40,28 @@ module dda_axis #(
   output logic         carry_o,  // this iteration steps the axis
   output logic         carry_next_o  // carry_o of the next clock (from the clock's late en_i)
 );
-  logic [W-1:0] mag_q;
+  // Parameter check at elaboration: Verilator and Yosys stop with the message
+  // (Icarus 11 has no elaboration system tasks: it skips the check).
+`ifndef __ICARUS__
+  if (W < 2) begin : g_bad_w
+    $error("dda_axis: parameter W must be >= 2");
+  end
+`endif
+
+  logic [W-1:0] mag_q, mag_d;
   logic [W:0]   s_q, s_d;
+  logic [W:0]   s_new;  // this clock's add (a load's or an iteration's)
 
   assign carry_o = s_q[W];
+  assign mag_d   = ld_i ? b_mag_i : mag_q;
+  assign s_d     = en_i ? s_new : s_q;
 
   if (MODULUS_2N) begin : g_2n
     logic       unused_dc;  // no dc in this mode
     logic [W:0] sum;
     assign unused_dc = ^b_dc_i;
     assign sum       = {1'b0, s_q[W-1:0]} + {1'b0, mag_q};
-    assign s_d       = pre_i ? {|(a0_i & b_mag_i), a0_i ^ b_mag_i} : {sum[W], sum[W-1:0] | hm_i};
+    assign s_new     = pre_i ? {|(a0_i & b_mag_i), a0_i ^ b_mag_i} : {sum[W], sum[W-1:0] | hm_i};
     // The next carry, with the add's carry out (the latest signal: the end of
     // the carry chain) choosing in the last LUT. The two nets are kept: ABC
     // sees a carry chain's output as early as a register and would otherwise
@@ -63,15 +74,16 @@ module dda_axis #(
   end else begin : g_n
     logic       unused_hm;  // no high mask in this mode
     logic [W-1:0] x;
-    logic [W:0] y, dc_q;
+    logic [W:0] y, dc_q, dc_d;
     assign unused_hm = ^hm_i;
     assign x         = pre_i ? a0_i : s_q[W-1:0];
     assign y         = pre_i ? {1'b0, b_mag_i} : (s_q[W] ? dc_q : {1'b0, mag_q});
-    assign s_d       = {1'b0, x} + y;
-    assign carry_next_o = en_i ? s_d[W] : s_q[W];
+    assign s_new     = {1'b0, x} + y;
+    assign carry_next_o = en_i ? s_new[W] : s_q[W];
+    assign dc_d      = ld_i ? b_dc_i : dc_q;
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) dc_q <= '0;
-      else if (ld_i) dc_q <= b_dc_i;
+      else dc_q <= dc_d;
     end
   end
 
@@ -80,8 +92,16 @@ module dda_axis #(
       mag_q <= '0;
       s_q   <= '0;
     end else begin
-      if (ld_i) mag_q <= b_mag_i;
-      if (en_i) s_q <= s_d;
+      mag_q <= mag_d;
+      s_q   <= s_d;
     end
   end
+
+`ifdef FORMAL
+  // Formal (scripts/formal.sh, in every core that uses this axis): the next
+  // carry, built apart for timing, is the next state's carry.
+  always_comb begin
+    if (rst_ni) a_carry_next: assert(carry_next_o == s_d[W]);
+  end
+`endif
 endmodule

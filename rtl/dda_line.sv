@@ -54,11 +54,11 @@
 // 0.23 (Debian 12) cannot parse multi-dimensional packed arrays, and
 // Icarus 11 cannot bit-select into them with a loop index.
 module dda_line #(
-  parameter int AXES   = 2,   // axes
-  parameter int ACC_W  = 32,  // signed delta width, accumulator width
-  parameter int POS_W  = 32,  // position counter width (wraps)
-  parameter int TIM_W  = 16,  // width of the step/dir timing settings
-  parameter int FEED_W = 16   // feed phase width; feed_i is FEED_W + 1 bits
+  parameter int AXES   = 2,   // axes (1..32)
+  parameter int ACC_W  = 32,  // signed delta width, accumulator width (2..62)
+  parameter int POS_W  = 32,  // position counter width (2..64; wraps)
+  parameter int TIM_W  = 16,  // width of the step/dir timing settings (>= 2)
+  parameter int FEED_W = 16   // feed phase width (>= 1); feed_i is FEED_W + 1 bits
 ) (
   input  logic                   clk_i,           // clock
   input  logic                   rst_ni,          // asynchronous, active low
@@ -82,11 +82,34 @@ module dda_line #(
   output logic                   done_o           // one clock per completed command
 );
   // ---------------------------------------------------------------------------
+  // Parameter checks at elaboration: Verilator and Yosys stop with the
+  // message (Icarus 11 has no elaboration system tasks: it skips them). The
+  // upper bounds are the range the HLS face (hls/dda_line.h), and so the
+  // lockstep verification, covers.
+`ifndef __ICARUS__
+  if (AXES < 1 || AXES > 32) begin : g_bad_axes
+    $error("dda_line: parameter AXES must be 1..32");
+  end
+  if (ACC_W < 2 || ACC_W > 62) begin : g_bad_acc_w
+    $error("dda_line: parameter ACC_W must be 2..62");
+  end
+  if (POS_W < 2 || POS_W > 64) begin : g_bad_pos_w
+    $error("dda_line: parameter POS_W must be 2..64");
+  end
+  if (TIM_W < 2) begin : g_bad_tim_w
+    $error("dda_line: parameter TIM_W must be >= 2");
+  end
+  if (FEED_W < 1) begin : g_bad_feed_w
+    $error("dda_line: parameter FEED_W must be >= 1");
+  end
+`endif
+
+  // ---------------------------------------------------------------------------
   // Buffer A: the taken command as magnitudes, signs and the OR of the
   // magnitudes (same bit length as their maximum).
   logic                  a_valid_q, a_valid_d;
-  logic [ACC_W-1:0]      a_any_q;
-  logic                  a_half_q;
+  logic [ACC_W-1:0]      a_any_q, a_any_d;
+  logic                  a_half_q, a_half_d;
   logic                  cmd_take;  // a command is taken this clock
   logic                  a_to_b;  // buffer A moves to buffer B this clock
   logic [AXES*ACC_W-1:0] cmd_mag;  // |delta_i| of the offered command
@@ -105,8 +128,9 @@ module dda_line #(
   // iterations to run after the first), hm = ~low, a0 = the first
   // accumulator value (hm, plus 2^(n-1) with half preload).
   logic                  b_valid_q, b_valid_d;
-  logic [ACC_W-1:0]      b_low_q, b_hm_q, b_a0_q;
-  logic                  b_low_zero_q, b_low_one_q;  // b_low_q == 0, b_low_q == 1
+  logic [ACC_W-1:0]      b_low_q, b_low_d, b_hm_q, b_hm_d, b_a0_q, b_a0_d;
+  logic                  b_low_zero_q, b_low_zero_d;  // b_low_q == 0
+  logic                  b_low_one_q, b_low_one_d;  // b_low_q == 1
   logic                  load;  // the engine loads buffer B this clock
   logic                  pre_load_q, pre_load_d;  // ...if it advances (or is idle): a register
   logic [ACC_W-1:0]      a_low, a_hm, a_top;
@@ -126,8 +150,8 @@ module dda_line #(
   logic [ACC_W-1:0]      left_q, left_d;  // iterations still to do after this one
   logic                  left_zero_q, left_zero_d;  // left_q == 0: this iteration is the last
   logic                  left_one_q, left_one_d;  // left_q == 1
-  logic [ACC_W-1:0]      hm_q;
-  logic                  done_q;
+  logic [ACC_W-1:0]      hm_q, hm_d;
+  logic                  done_q, done_d;
   logic [AXES-1:0]       carry;  // this iteration steps the axis
   logic [AXES-1:0]       carry_next;  // carry on the next clock (the stage decides block a clock ahead)
   logic [AXES-1:0]       moves;  // the running command moves the axis at all
@@ -191,6 +215,16 @@ module dda_line #(
   assign b_valid_d   = advance ? bv_adv : bv_idle;
   assign pre_load_d  = advance ? bv_adv && (!act_adv || lz_adv) : bv_idle && (!act_idle || lz_idle);
   assign a_valid_d   = !abort_i && (cmd_take || (a_valid_q && !a_to_b));
+  assign a_any_d     = cmd_take ? cmd_any : a_any_q;
+  assign a_half_d    = cmd_take ? half_preload_i : a_half_q;
+  assign b_low_d     = a_to_b ? a_low : b_low_q;
+  assign b_hm_d      = a_to_b ? a_hm : b_hm_q;
+  assign b_a0_d      = a_to_b ? a_hm | (a_half_q ? a_top : '0) : b_a0_q;
+  // low = 2^n - 1 is 0 (1) just when the magnitudes' OR is 0 (1).
+  assign b_low_zero_d = a_to_b ? (a_any_q == '0) : b_low_zero_q;
+  assign b_low_one_d  = a_to_b ? (a_any_q == ACC_W'(1)) : b_low_one_q;
+  assign hm_d        = load ? b_hm_q : hm_q;
+  assign done_d      = last;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -211,27 +245,22 @@ module dda_line #(
       hm_q         <= '0;
       done_q       <= 1'b0;
     end else begin
-      a_valid_q <= a_valid_d;
-      if (cmd_take) begin
-        a_any_q  <= cmd_any;
-        a_half_q <= half_preload_i;
-      end
-      b_valid_q  <= b_valid_d;
-      pre_load_q <= pre_load_d;
-      if (a_to_b) begin
-        b_low_q <= a_low;
-        b_hm_q  <= a_hm;
-        b_a0_q  <= a_hm | (a_half_q ? a_top : '0);
-        // low = 2^n - 1 is 0 (1) just when the magnitudes' OR is 0 (1).
-        b_low_zero_q <= (a_any_q == '0);
-        b_low_one_q  <= (a_any_q == ACC_W'(1));
-      end
-      act_q       <= act_d;
-      left_q      <= left_d;
-      left_zero_q <= left_zero_d;
-      left_one_q  <= left_one_d;
-      if (load) hm_q <= b_hm_q;
-      done_q <= last;
+      a_valid_q    <= a_valid_d;
+      a_any_q      <= a_any_d;
+      a_half_q     <= a_half_d;
+      b_valid_q    <= b_valid_d;
+      pre_load_q   <= pre_load_d;
+      b_low_q      <= b_low_d;
+      b_hm_q       <= b_hm_d;
+      b_a0_q       <= b_a0_d;
+      b_low_zero_q <= b_low_zero_d;
+      b_low_one_q  <= b_low_one_d;
+      act_q        <= act_d;
+      left_q       <= left_d;
+      left_zero_q  <= left_zero_d;
+      left_one_q   <= left_one_d;
+      hm_q         <= hm_d;
+      done_q       <= done_d;
     end
   end
 
@@ -241,10 +270,9 @@ module dda_line #(
   for (genvar i = 0; i < AXES; i++) begin : g_axis
     logic [ACC_W-1:0] delta;
     logic             cmd_neg;
-    logic [ACC_W-1:0] a_mag_q, b_mag_q;
-    logic             a_neg_q, b_neg_q, neg_q;
-    logic             a_moves_q, b_moves_q, moves_q;
-    logic             moves_d;
+    logic [ACC_W-1:0] a_mag_q, a_mag_d, b_mag_q, b_mag_d;
+    logic             a_neg_q, a_neg_d, b_neg_q, b_neg_d, neg_q, neg_d;
+    logic             a_moves_q, a_moves_d, b_moves_q, b_moves_d, moves_q, moves_d;
 
     assign delta = cmd_delta_i[i*ACC_W +: ACC_W];
     magnitude #(
@@ -279,7 +307,14 @@ module dda_line #(
                                 (idle_load ? b_moves_q : moves_q && !abort_i);
     assign moves[i] = moves_q;
     assign neg[i]   = neg_q;
-    assign neg_next[i] = load ? b_neg_q : neg_q;
+    assign neg_next[i] = neg_d;
+    assign a_mag_d   = cmd_take ? cmd_mag[i*ACC_W +: ACC_W] : a_mag_q;
+    assign a_neg_d   = cmd_take ? cmd_neg : a_neg_q;
+    assign a_moves_d = cmd_take ? (delta != '0) : a_moves_q;
+    assign b_mag_d   = a_to_b ? a_mag_q : b_mag_q;
+    assign b_neg_d   = a_to_b ? a_neg_q : b_neg_q;
+    assign b_moves_d = a_to_b ? a_moves_q : b_moves_q;
+    assign neg_d     = load ? b_neg_q : neg_q;
 
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
@@ -292,18 +327,14 @@ module dda_line #(
         neg_q     <= 1'b0;
         moves_q   <= 1'b0;
       end else begin
-        if (cmd_take) begin
-          a_mag_q   <= cmd_mag[i*ACC_W +: ACC_W];
-          a_neg_q   <= cmd_neg;
-          a_moves_q <= (delta != '0);
-        end
-        if (a_to_b) begin
-          b_mag_q   <= a_mag_q;
-          b_neg_q   <= a_neg_q;
-          b_moves_q <= a_moves_q;
-        end
-        if (load) neg_q <= b_neg_q;
-        moves_q <= moves_d;
+        a_mag_q   <= a_mag_d;
+        a_neg_q   <= a_neg_d;
+        a_moves_q <= a_moves_d;
+        b_mag_q   <= b_mag_d;
+        b_neg_q   <= b_neg_d;
+        b_moves_q <= b_moves_d;
+        neg_q     <= neg_d;
+        moves_q   <= moves_d;
       end
     end
   end
@@ -336,4 +367,55 @@ module dda_line #(
 
   assign busy_o = act_q || a_valid_q || b_valid_q || (|step_o);
   assign done_o = done_q;
+
+`ifdef FORMAL
+  // ---------------------------------------------------------------------------
+  // Formal (scripts/formal.sh, rtl/formal/dda_line_props.sv): the port
+  // contract every core shares (rtl/formal/core_contract.sv) with the
+  // commands buffers A and B and the engine hold, and the invariants of the
+  // registers it rests on (each a register kept equal to what it stands for).
+  logic [1:0] f_held;  // also read by log_stepper's proof (scripts/formal.sh links it)
+  assign f_held = 2'(a_valid_q) + 2'(b_valid_q) + 2'(act_q);
+
+  core_contract #(
+    .AXES  (AXES),
+    .TIM_W (TIM_W),
+    .CAP   (3),
+    .HELD_W(2)
+  ) u_contract (
+    .clk_i,
+    .rst_ni,
+    .cmd_valid_i,
+    .cmd_ready_o,
+    .abort_i,
+    .step_len_i,
+    .step_o,
+    .busy_o,
+    .done_o,
+    .held_i(f_held)
+  );
+
+  // Progress: while a command runs with full feed (feed_i >= 2^FEED_W on the
+  // clock before) and no abort, the engine advances on every clock but one on
+  // which an axis its iteration steps is not ready: it waits for the step/dir
+  // timing only, and rtl/formal/stepdir_axis_props.sv proves that ready_o waits
+  // for exactly that (never longer; dir_o turns as soon as the hold allows).
+  logic f_full_q, f_full_d;
+  assign f_full_d = feed_i[FEED_W];
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) f_full_q <= 1'b0;
+    else f_full_q <= f_full_d;
+  end
+
+  always_comb begin
+    if (rst_ni) begin
+      a_progress: assert(!(act_q && f_full_q && !abort_i) || advance || (carry & ~unused_ready) != '0);
+      a_pre_load: assert(pre_load_q == (b_valid_q && (!act_q || left_zero_q)));
+      a_tick: assert(!tick || act_q);
+      a_left: assert(!act_q || (left_zero_q == (left_q == '0) && left_one_q == (left_q == ACC_W'(1))));
+      a_b_low: assert(!b_valid_q || (b_low_zero_q == (b_low_q == '0) &&
+                                     b_low_one_q == (b_low_q == ACC_W'(1))));
+    end
+  end
+`endif
 endmodule

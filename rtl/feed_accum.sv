@@ -17,7 +17,7 @@
 // reach the tick through one gate, and the carry chains start at registers
 // and pins.
 module feed_accum #(
-  parameter int FEED_W = 16  // phase width; feed_i is FEED_W + 1 bits
+  parameter int FEED_W = 16  // phase width (>= 1); feed_i is FEED_W + 1 bits
 ) (
   input  logic            clk_i,
   input  logic            rst_ni,
@@ -27,7 +27,15 @@ module feed_accum #(
   input  logic            run_next_i,  // the engine has work on the next clock
   output logic            tick_o       // the engine may do one operation this clock (only with run_i)
 );
-  logic [FEED_W:0]   feed_q;  // the feed word in force this clock
+  // Parameter check at elaboration: Verilator and Yosys stop with the message
+  // (Icarus 11 has no elaboration system tasks: it skips the check).
+`ifndef __ICARUS__
+  if (FEED_W < 1) begin : g_bad_feed_w
+    $error("feed_accum: parameter FEED_W must be >= 1");
+  end
+`endif
+
+  logic [FEED_W:0]   feed_q, feed_d;  // the feed word in force this clock
   logic [FEED_W-1:0] phase_q, phase_d;
   logic              tick_q, tick_d;
   logic [FEED_W-1:0] sum;  // this clock's add (its carry is tick_q)
@@ -40,6 +48,7 @@ module feed_accum #(
   assign adv       = run_i && !feed_q[FEED_W] && !(tick_q && hold_i);
   // Continuous assignments, not part-selects inside always_comb: Icarus 11
   // does not support constant selects in always_* processes.
+  assign feed_d    = feed_i;
   assign phase_d   = adv ? sum : phase_q;
   assign tick_d    = run_next_i && (feed_i[FEED_W] || (adv ? add_next[FEED_W] : keep_next[FEED_W]));
   assign tick_o    = tick_q;
@@ -50,7 +59,7 @@ module feed_accum #(
       phase_q <= '0;
       tick_q  <= 1'b0;
     end else begin
-      feed_q  <= feed_i;
+      feed_q  <= feed_d;
       phase_q <= phase_d;
       tick_q  <= tick_d;
     end

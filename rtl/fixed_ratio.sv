@@ -104,11 +104,11 @@
 // always_* processes).
 module fixed_ratio #(
   parameter int AXES   = 2,   // axes (1..32)
-  parameter int ACC_W  = 32,  // width of each signed delta of cmd_delta_i
-  parameter int FRAC_W = 35,  // rate-word fraction bits: >= ACC_W + 1 (exact counts; the divider)
-  parameter int POS_W  = 32,  // position counter width (wraps)
-  parameter int TIM_W  = 16,  // width of the step/dir timing settings and counters
-  parameter int FEED_W = 16   // feed phase width; feed_i = 2^FEED_W is full feed
+  parameter int ACC_W  = 32,  // width of each signed delta of cmd_delta_i (2..63)
+  parameter int FRAC_W = 35,  // rate-word fraction bits: ACC_W + 1..62 (exact counts; the divider)
+  parameter int POS_W  = 32,  // position counter width (2..64; wraps)
+  parameter int TIM_W  = 16,  // width of the step/dir timing settings and counters (>= 2)
+  parameter int FEED_W = 16   // feed phase width (>= 1); feed_i = 2^FEED_W is full feed
 ) (
   input  logic                  clk_i,         // clock
   input  logic                  rst_ni,        // asynchronous, active low
@@ -130,6 +130,33 @@ module fixed_ratio #(
   output logic                  busy_o,        // a command buffered or running, or a pulse high
   output logic                  done_o         // one clock per completed command
 );
+  // Parameter checks at elaboration: Verilator and Yosys stop with the
+  // message (Icarus 11 has no elaboration system tasks: it skips them).
+  // FRAC_W >= ACC_W + 1: no minor axis lags past tick M
+  // (models/fixed_ratio_model.h), and the divider's dividend bits come in
+  // time (below). The upper bounds are the range the HLS face
+  // (hls/fixed_ratio.h), and so the lockstep verification, covers.
+`ifndef __ICARUS__
+  if (AXES < 1 || AXES > 32) begin : g_bad_axes
+    $error("fixed_ratio: parameter AXES must be 1..32");
+  end
+  if (ACC_W < 2 || ACC_W > 63) begin : g_bad_acc_w
+    $error("fixed_ratio: parameter ACC_W must be 2..63");
+  end
+  if (FRAC_W < ACC_W + 1 || FRAC_W > 62) begin : g_bad_frac_w
+    $error("fixed_ratio: parameter FRAC_W must be ACC_W + 1..62");
+  end
+  if (POS_W < 2 || POS_W > 64) begin : g_bad_pos_w
+    $error("fixed_ratio: parameter POS_W must be 2..64");
+  end
+  if (TIM_W < 2) begin : g_bad_tim_w
+    $error("fixed_ratio: parameter TIM_W must be >= 2");
+  end
+  if (FEED_W < 1) begin : g_bad_feed_w
+    $error("fixed_ratio: parameter FEED_W must be >= 1");
+  end
+`endif
+
   localparam int DivN = FRAC_W + 2;  // divider clocks: compares, integer bit, FRAC_W fraction bits
   localparam int DivW = $clog2(DivN + 1);  // holds the divider clocks left, 0..DivN
   localparam logic [DivW-1:0] DivClocks = DivW'(DivN);
@@ -141,7 +168,7 @@ module fixed_ratio #(
   // ~M, M = max |delta_i| the divisor (from divider clock 3 on): inverted, so
   // that the carry chain of rem - M = rem + ~M + 1 takes a register (M itself
   // would need an inverter LUT in front of the chain).
-  logic [ACC_W-1:0]      max_n_q;
+  logic [ACC_W-1:0]      max_n_q, max_n_d;
   logic [DivW-1:0]       div_left_q, div_left_d;  // divider clocks still to run
   logic                  div_last_q, div_last_d;  // div_left_q == 1: this clock gives the last bit
   logic                  cmd_take;  // a command is taken this clock
@@ -151,7 +178,7 @@ module fixed_ratio #(
   logic                  buf_ready;  // the rate words are ready now or with this clock's quotient bit
   logic [AXES*ACC_W-1:0] buf_mag;  // |delta_i| of the buffered command at [i*ACC_W +: ACC_W]
   logic [AXES*AXES-1:0]  cmp_ge, cmp_eq;  // bit i*AXES + j, i < j: |delta_i| >= (=) |delta_j|
-  logic [AXES*AXES-1:0]  ge_q, eq_q;  // ...registered in divider clock 1
+  logic [AXES*AXES-1:0]  ge_q, ge_d, eq_q, eq_d;  // ...registered in divider clock 1
   logic [AXES*AXES-1:0]  ge;  // bit i*AXES + j: |delta_i| >= |delta_j|, from ge_q and eq_q
   logic [AXES-1:0]       is_max;  // |delta_i| = M: the axis's integer quotient bit
   logic [ACC_W-1:0]      max;  // M, the OR of the maximal magnitudes (all equal)
@@ -198,11 +225,14 @@ module fixed_ratio #(
                  ph_q[0] ? '0 : {low_q[FRAC_W-2:0], 1'b0};
   // A division's clocks 1-3; an abort clears them (its division ends).
   assign ph_d  = abort_i ? '0 : {ph_q[1:0], cmd_take && !cmd_zero};
+  assign ge_d  = ph_q[0] ? cmp_ge : ge_q;
+  assign eq_d  = ph_q[0] ? cmp_eq : eq_q;
+  assign max_n_d = ph_q[1] ? ~max : max_n_q;
 
   // ---------------------------------------------------------------------------
   // Engine: completion, feed and the per-axis slices below.
   logic            act_q, act_d;  // a command is running
-  logic            done_q;
+  logic            done_q, done_d;
   logic [AXES-1:0] left;  // the axis still has pulses to send
   logic [AXES-1:0] carry;  // its phase carries on this tick
   logic [AXES-1:0] must;  // it steps on this tick
@@ -263,6 +293,7 @@ module fixed_ratio #(
     if (div_run) div_left_d = div_left_q - DivW'(1);
     if (cmd_take) div_left_d = cmd_zero ? '0 : DivClocks;
     div_last_d = div_left_d == DivW'(1);
+    done_d     = last;
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -284,16 +315,19 @@ module fixed_ratio #(
       div_last_q  <= div_last_d;
       ph_q        <= ph_d;
       low_q       <= low_d;
-      if (ph_q[0]) begin
-        ge_q <= cmp_ge;
-        eq_q <= cmp_eq;
-      end
-      if (ph_q[1]) max_n_q <= ~max;
-      act_q  <= act_d;
-      last_q <= last_d;
-      done_q <= last;
+      ge_q        <= ge_d;
+      eq_q        <= eq_d;
+      max_n_q     <= max_n_d;
+      act_q       <= act_d;
+      last_q      <= last_d;
+      done_q      <= done_d;
     end
   end
+
+`ifdef FORMAL
+  // Per axis: the flag registers equal the compares they stand for (below).
+  logic [AXES-1:0] f_cnt_ok;
+`endif
 
   // ---------------------------------------------------------------------------
   // Per-axis slices: the magnitude of the offered delta, its buffer entry and
@@ -303,10 +337,10 @@ module fixed_ratio #(
     logic             cmd_neg;
     logic [ACC_W-1:0] cmd_mag;  // |delta_i| of the offered command
     // Buffer and divider
-    logic [ACC_W-1:0] buf_mag_q;  // |delta_i|
-    logic             buf_neg_q;
-    logic             buf_nz_q;  // |delta_i| != 0
-    logic             buf_one_q;  // |delta_i| == 1
+    logic [ACC_W-1:0] buf_mag_q, buf_mag_d;  // |delta_i|
+    logic             buf_neg_q, buf_neg_d;
+    logic             buf_nz_q, buf_nz_d;  // |delta_i| != 0
+    logic             buf_one_q, buf_one_d;  // |delta_i| == 1
     logic [ACC_W-1:0] rem_q, rem_d;  // partial remainder, < 2 M
     logic [ACC_W:0]   diff;  // rem - M
     logic             bit_ge;  // rem >= M: the quotient bit
@@ -317,7 +351,7 @@ module fixed_ratio #(
     logic [FRAC_W:0]  quot_q, quot_d;  // quotient bits so far, the last in bit 0
     // Engine: the rate word R <= 2^FRAC_W, and the phase accumulator kept as
     // phase + R, so that the carry is a register.
-    logic [FRAC_W:0]  rate_q;  // R = ceil(|delta_i| 2^FRAC_W / M)
+    logic [FRAC_W:0]  rate_q, rate_d;  // R = ceil(|delta_i| 2^FRAC_W / M)
     logic [FRAC_W:0]  sum_q, sum_d;  // phase + R < 2^(FRAC_W+1); phase = sum_q[FRAC_W-1:0]
     logic [FRAC_W:0]  sum_next;  // the next tick's phase + R
     logic [FRAC_W:1]  sum_load;  // one half + R, but bit 0 (load_bit or sum0_other)
@@ -330,8 +364,8 @@ module fixed_ratio #(
     // stall and completion logic reads no compare of the counter.
     logic             left_q, left_d;
     logic             one_q, one_d;
-    logic             major_q;  // |delta_i| = M for the running command
-    logic             neg_q;
+    logic             major_q, major_d;  // |delta_i| = M for the running command
+    logic             neg_q, neg_d;
 
     assign delta   = cmd_delta_i[i*ACC_W +: ACC_W];
     assign cmd_neg = delta[ACC_W-1];
@@ -363,7 +397,7 @@ module fixed_ratio #(
     assign major[i] = major_q;
     assign buf_le1[i] = !buf_nz_q || buf_one_q;
     assign neg[i]   = neg_q;
-    assign neg_next[i] = buf_take ? buf_neg_q : neg_q;
+    assign neg_next[i] = neg_d;
     assign sum_next = {1'b0, sum_q[FRAC_W-1:0]} + rate_q;
     // One half + R, R = quot_d <= 2^FRAC_W: only bits FRAC_W and FRAC_W - 1
     // change (written out: an adder here would put a carry chain on the load).
@@ -397,6 +431,19 @@ module fixed_ratio #(
     assign must_next[i] = sum_d[FRAC_W] && left_d;
     assign one_d  = advance ? (take_adv ? buf_one_q : must[i] ? two[i] : one_q) :
                               (take_idle ? buf_one_q : one_q);
+    // The buffer takes the offered command; the engine, on a load, the
+    // buffered one (major_q: its compares, still in ge_q and eq_q).
+    assign buf_mag_d = cmd_take ? cmd_mag : buf_mag_q;
+    assign buf_neg_d = cmd_take ? cmd_neg : buf_neg_q;
+    assign buf_nz_d  = cmd_take ? delta != '0 : buf_nz_q;
+    assign buf_one_d = cmd_take ? (delta == ACC_W'(1)) || (delta == '1) : buf_one_q;  // +1 or -1
+    assign rate_d    = buf_take ? rate_load : rate_q;
+    assign neg_d     = buf_take ? buf_neg_q : neg_q;
+    assign major_d   = buf_take ? is_max[i] : major_q;
+`ifdef FORMAL
+    assign f_cnt_ok[i] = left_q == (cnt_q != '0) && one_q == (cnt_q == ACC_W'(1)) &&
+                         buf_nz_q == (buf_mag_q != '0) && buf_one_q == (buf_mag_q == ACC_W'(1));
+`endif
 
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
@@ -414,23 +461,19 @@ module fixed_ratio #(
         neg_q     <= 1'b0;
         major_q   <= 1'b0;
       end else begin
-        if (cmd_take) begin
-          buf_mag_q <= cmd_mag;
-          buf_neg_q <= cmd_neg;
-          buf_nz_q  <= delta != '0;
-          buf_one_q <= (delta == ACC_W'(1)) || (delta == '1);  // +1 or -1
-        end
-        rem_q  <= rem_d;
-        quot_q <= quot_d;
-        if (buf_take) begin
-          rate_q  <= rate_load;
-          neg_q   <= buf_neg_q;
-          major_q <= is_max[i];  // the compares of the buffered command (still in ge_q, eq_q)
-        end
-        sum_q <= sum_d;
-        cnt_q <= cnt_d;
-        left_q <= left_d;
-        one_q  <= one_d;
+        buf_mag_q <= buf_mag_d;
+        buf_neg_q <= buf_neg_d;
+        buf_nz_q  <= buf_nz_d;
+        buf_one_q <= buf_one_d;
+        left_q    <= left_d;
+        one_q     <= one_d;
+        rem_q     <= rem_d;
+        quot_q    <= quot_d;
+        rate_q    <= rate_d;
+        sum_q     <= sum_d;
+        cnt_q     <= cnt_d;
+        neg_q     <= neg_d;
+        major_q   <= major_d;
       end
     end
   end
@@ -463,4 +506,53 @@ module fixed_ratio #(
 
   assign busy_o = act_q || buf_valid_q || (|step_o);
   assign done_o = done_q;
+
+`ifdef FORMAL
+  // ---------------------------------------------------------------------------
+  // Formal (scripts/formal.sh, rtl/formal/fixed_ratio_props.sv): the port
+  // contract every core shares (rtl/formal/core_contract.sv) with the
+  // commands the buffer (with its division) and the engine hold, and the invariants of the
+  // registers it rests on.
+  logic [1:0] f_held;
+  assign f_held = 2'(buf_valid_q) + 2'(act_q);
+
+  core_contract #(
+    .AXES  (AXES),
+    .TIM_W (TIM_W),
+    .CAP   (2),
+    .HELD_W(2)
+  ) u_contract (
+    .clk_i,
+    .rst_ni,
+    .cmd_valid_i,
+    .cmd_ready_o,
+    .abort_i,
+    .step_len_i,
+    .step_o,
+    .busy_o,
+    .done_o,
+    .held_i(f_held)
+  );
+
+  // Progress: while a command runs with full feed (feed_i >= 2^FEED_W on the
+  // clock before) and no abort, the engine advances on every clock but one on
+  // which an axis its tick steps is not ready: it waits for the step/dir timing
+  // only, and rtl/formal/stepdir_axis_props.sv proves that ready_o waits for
+  // exactly that (never longer; dir_o turns as soon as the hold allows).
+  logic f_full_q, f_full_d;
+  assign f_full_d = feed_i[FEED_W];
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) f_full_q <= 1'b0;
+    else f_full_q <= f_full_d;
+  end
+
+  always_comb begin
+    if (rst_ni) begin
+      a_progress: assert(!(act_q && f_full_q && !abort_i) || advance || (must & ~unused_ready) != '0);
+      a_tick: assert(!tick || act_q);
+      // The flag registers equal the compares they stand for.
+      a_cnt_flags: assert(f_cnt_ok == '1 && div_last_q == (div_left_q == DivW'(1)));
+    end
+  end
+`endif
 endmodule

@@ -58,14 +58,14 @@
 // fine stage is busy; done_o pulses for one clock with the last iteration of
 // a curve's last segment; step_o, dir_o and pos_o are the fine stage's.
 module log_stepper #(
-  parameter int AXES   = 4,   // X, Y, Z, A (fixed)
-  parameter int INT_W  = 10,  // integer bits of the coarse engine's words
-  parameter int FRAC_W = 30,  // fraction bits of the coarse engine's words
-  parameter int MUL_K  = 10,  // multiplier bits per clock
-  parameter int SEG_W  = 16,  // width of the signed segment deltas (the fine stage's ACC_W)
-  parameter int POS_W  = 32,  // position counter width
-  parameter int TIM_W  = 16,  // step/dir timing settings width
-  parameter int FEED_W = 16   // feed accumulator width
+  parameter int AXES   = 4,   // X, Y, Z, A (fixed: must be 4)
+  parameter int INT_W  = 10,  // integer bits of the coarse engine's words (>= 4; INT_W + FRAC_W <= 62)
+  parameter int FRAC_W = 30,  // fraction bits of the coarse engine's words (>= 18)
+  parameter int MUL_K  = 10,  // multiplier bits per clock (1..INT_W + FRAC_W)
+  parameter int SEG_W  = 16,  // width of the signed segment deltas, the fine stage's ACC_W (2..POS_W)
+  parameter int POS_W  = 32,  // position counter width (SEG_W..62)
+  parameter int TIM_W  = 16,  // step/dir timing settings width (>= 2)
+  parameter int FEED_W = 16   // feed accumulator width (>= 1)
 ) (
   input  logic                  clk_i,               // clock
   input  logic                  rst_ni,              // asynchronous, active low
@@ -102,6 +102,42 @@ module log_stepper #(
   localparam int CycleStart = 2;
   localparam int RegK0     = 6;  // RK0, as an int for the load loop
 
+  // ---------------------------------------------------------------------------
+  // Parameter checks at elaboration: Verilator and Yosys stop with the
+  // message (Icarus 11 has no elaboration system tasks: it skips them). The
+  // ranges are the HLS face's (hls/log_stepper.h), and so the lockstep
+  // verification's; the operation counter (cnt_q, 7 bits) needs every
+  // operation's clocks below 128, which W <= 62 gives.
+`ifndef __ICARUS__
+  if (AXES != 4) begin : g_bad_axes
+    $error("log_stepper: parameter AXES must be 4");
+  end
+  if (INT_W < 4) begin : g_bad_int_w
+    $error("log_stepper: parameter INT_W must be >= 4");
+  end
+  if (FRAC_W < 18) begin : g_bad_frac_w
+    $error("log_stepper: parameter FRAC_W must be >= 18");
+  end
+  if (W > 62) begin : g_bad_w
+    $error("log_stepper: parameters INT_W + FRAC_W must be <= 62");
+  end
+  if (MUL_K < 1 || MUL_K > W) begin : g_bad_mul_k
+    $error("log_stepper: parameter MUL_K must be 1..INT_W + FRAC_W");
+  end
+  if (SEG_W < 2 || SEG_W > POS_W) begin : g_bad_seg_w
+    $error("log_stepper: parameter SEG_W must be 2..POS_W");
+  end
+  if (POS_W > 62) begin : g_bad_pos_w
+    $error("log_stepper: parameter POS_W must be <= 62");
+  end
+  if (TIM_W < 2) begin : g_bad_tim_w
+    $error("log_stepper: parameter TIM_W must be >= 2");
+  end
+  if (FEED_W < 1) begin : g_bad_feed_w
+    $error("log_stepper: parameter FEED_W must be >= 1");
+  end
+`endif
+
   // Operations and registers (hls/log_stepper.h, namespace log_uop).
   localparam logic [2:0] OpMul = 3'd0, OpSqrt = 3'd1, OpRecip = 3'd2, OpAdd = 3'd3,
                          OpRsb = 3'd4, OpPos = 3'd5, OpEmit = 3'd6;
@@ -116,8 +152,8 @@ module log_stepper #(
   // pc_q, registered from the entry of pc_d, so no clock's path starts with
   // the decode. (Pipeline registers only: the pins see no difference.)
   logic [5:0]  pc_q, pc_d;
-  logic [19:0] dec_d;  // rom(pc_d): {op, dst, src1, src2, sh}
-  logic [9:0]  dec_q;  // {op, dst, sh} of pc_q (the sources go to the operand registers)
+  logic [19:0] ent_d;  // rom(pc_d): {op, dst, src1, src2, sh}
+  logic [9:0]  dec_q, dec_d;  // {op, dst, sh} of pc_q (the sources go to the operand registers)
   logic [2:0]  op;
   logic [4:0]  dst;
   logic [1:0]  sh;
@@ -180,15 +216,16 @@ module log_stepper #(
   assign op     = dec_q[9:7];
   assign dst    = dec_q[6:2];
   assign sh     = dec_q[1:0];
-  assign dec_d  = rom(pc_d);
-  assign src1_d = dec_d[11:7];
-  assign src2_d = dec_d[6:2];
+  assign ent_d  = rom(pc_d);
+  assign dec_d  = {ent_d[19:12], ent_d[1:0]};
+  assign src1_d = ent_d[11:7];
+  assign src2_d = ent_d[6:2];
 
   // ---------------------------------------------------------------------------
   // Register file: registers 2..NRegs-1, flat (W bits each); 0 and 1 read as
   // the constants 1.0 and 3.0.
   logic [NRegs*W-1:0] reg_q, reg_d;
-  logic [W-1:0]       s1, s2;  // operand registers (s1_q, s2_q)
+  logic [W-1:0]       s1_q, s2_q;  // operand registers
 
   // (Assigned to its name, not `return`: Yosys 0.23 has no return statement.)
   function automatic logic [W-1:0] rd(input logic [NRegs*W-1:0] regs, input logic [4:0] r);
@@ -197,7 +234,7 @@ module log_stepper #(
     else rd = regs[r*W +: W];
   endfunction
 
-  // The two operand registers: s1/s2 hold register src1/src2 of the entry
+  // The two operand registers: s1_q/s2_q hold register src1/src2 of the entry
   // at pc_q, read one clock ahead (from the register file as the command
   // load leaves it, with the write port's value bypassed) by AND-OR selects.
   // (A variable part-select `reg_q[src*W +: W]` made Yosys build a 1232-bit
@@ -221,9 +258,9 @@ module log_stepper #(
   // Datapath units (their state: acc_q, rem_q, res_q).
   logic                    act_q, act_d;
   logic [6:0]              cnt_q, cnt_d;
-  logic [ProdW-1:0]        acc_q, acc_d, acc_sum, pp, pp_q, pos_round;
-  logic                    first_q;  // cnt_q == 0, registered from cnt_d (a unit's first clock)
-  logic [MUL_K-1:0]        digit;  // digit cnt_q of s2 (registered)
+  logic [ProdW-1:0]        acc_q, acc_d, acc_sum, pp_q, pp_d, pos_round;
+  logic                    first_q, first_d;  // cnt_q == 0, registered from cnt_d (a unit's first clock)
+  logic [MUL_K-1:0]        digit_q;  // digit cnt_q of s2 (registered)
   logic [W+MUL_K-1:0]      prod;   // s1 times one digit
   logic [RemW-1:0]         rem_q, rem_d, res_q, res_d;
   // The remainder and the partial result never reach their top bit before
@@ -265,19 +302,21 @@ module log_stepper #(
       place_d[j] = cnt_d == 7'(j);
       digit_d    = digit_d | ({MUL_K{place_d[j]}} & MUL_K'(s2_d >> (MUL_K * j)));
     end
-    pp = '0;
+    pp_d = '0;
     for (int j = 0; j < MulCyc; j++) begin
-      pp = pp | ({ProdW{place_q[j]}} & (ProdW'(prod) << (MUL_K * j)));
+      pp_d = pp_d | ({ProdW{place_q[j]}} & (ProdW'(prod) << (MUL_K * j)));
     end
   end
-  assign prod      = s1 * digit;
+  assign prod      = s1_q * digit_q;
+  assign first_d   = cnt_d == '0;
   // Two stages: pp_q registers s1 digit_cnt << MUL_K cnt (cnt < MulCyc), the
   // accumulator adds it a clock later; at cnt = MulCyc, acc_sum is the product.
   assign acc_sum   = first_q ? '0 : acc_q + pp_q;
   assign pos_round = acc_sum + (ProdW'(1) << (PosSh - 1));
   // X >= x_end, registered from the next register values (X changes only on
   // its ADD): the stop rule's compare is off the EMIT -> pc path.
-  logic past_end_q;
+  logic past_end_q, past_end_d;
+  assign past_end_d = reg_d[RX*W +: W] >= reg_d[RXEnd*W +: W];
   assign emit_last = sh[0] && past_end_q;
   assign cmd_take  = cmd_valid_i && !act_q && !abort_i;
 
@@ -295,7 +334,7 @@ module log_stepper #(
     end else begin
       rem_in = first_q ? RemW'(1) << (FRAC_W - 1) : rem_q;
       rem2   = {rem_in[RemW-2:0], 1'b0};
-      trial  = RemW'(s1);
+      trial  = RemW'(s1_q);
     end
   end
 
@@ -308,8 +347,8 @@ module log_stepper #(
     unique case (op)
       OpMul:          wdata = W'(acc_sum >> FRAC_W);
       OpSqrt, OpRecip: wdata = W'(res_d);
-      OpAdd:          wdata = s1 + s2;
-      OpRsb:          wdata = rd(reg_q, RThree) - (s1 << sh);
+      OpAdd:          wdata = s1_q + s2_q;
+      OpRsb:          wdata = rd(reg_q, RThree) - (s1_q << sh);
       default:        wdata = '0;
     endcase
     we = act_q && !abort_i && cnt_last &&
@@ -433,11 +472,11 @@ module log_stepper #(
       past_end_q  <= 1'b0;
       rad_q       <= '0;
       first_q     <= 1'b1;
-      digit       <= '0;
+      digit_q     <= '0;
       place_q     <= '0;
       dec_q       <= '0;  // rom(0) is {OpMul, ...}: op 0, and nothing runs before a take
-      s1          <= '0;
-      s2          <= '0;
+      s1_q        <= '0;
+      s2_q        <= '0;
       acc_q       <= '0;
       pp_q        <= '0;
       rem_q       <= '0;
@@ -454,16 +493,16 @@ module log_stepper #(
       pc_q        <= pc_d;
       cnt_q       <= cnt_d;
       reg_q       <= reg_d;
-      dec_q       <= {dec_d[19:12], dec_d[1:0]};
-      past_end_q  <= reg_d[RX*W +: W] >= reg_d[RXEnd*W +: W];
+      dec_q       <= dec_d;
+      past_end_q  <= past_end_d;
       rad_q       <= rad_d;
-      first_q     <= cnt_d == '0;
-      digit       <= digit_d;
+      first_q     <= first_d;
+      digit_q     <= digit_d;
       place_q     <= place_d;
-      s1          <= s1_d;
-      s2          <= s2_d;
+      s1_q        <= s1_d;
+      s2_q        <= s2_d;
       acc_q       <= acc_d;
-      pp_q        <= pp;
+      pp_q        <= pp_d;
       rem_q       <= rem_d;
       res_q       <= res_d;
       lnew_q      <= lnew_d;
@@ -507,4 +546,74 @@ module log_stepper #(
   assign cmd_ready_o = !act_q;
   assign busy_o      = act_q || seg_valid_q || fine_busy;
   assign done_o      = fine_done && tag_q[0];
+
+`ifdef FORMAL
+  // ---------------------------------------------------------------------------
+  // Formal (scripts/formal.sh, rtl/formal/log_stepper_props.sv): the port
+  // contract every core shares (rtl/formal/core_contract.sv), a command
+  // being a curve: it is held from its take until the done_o of its last
+  // segment, by the coarse engine (act_q) while it is computed, then by its
+  // last segment, in the segment register or in the fine stage (a tag set).
+  // The fine stage's own contract counts the segments it holds (u_fine's
+  // f_held, which scripts/formal.sh connects to f_fine_held after
+  // flattening: Yosys 0.23 has no hierarchical references); the tags follow
+  // them one for one.
+  logic [1:0] f_fine_held;  // u_fine.f_held, connected by scripts/formal.sh
+  logic [3:0] f_seq;  // the segments in flight, oldest first: the tags, then the segment register
+  logic [2:0] f_n;  // how many
+  logic [2:0] f_held, f_lasts;
+  logic       f_young;  // the youngest segment in flight ends its curve (1 when none)
+  logic       f_young_none;  // no segment in flight
+  logic [19:0] f_ent;  // rom(pc_q)
+  assign f_ent = rom(pc_q);
+  always_comb begin
+    f_seq = 4'(tag_q & ((3'd1 << tag_n_q) - 3'd1));
+    f_n   = 3'(tag_n_q);
+    if (seg_valid_q) begin
+      f_seq[tag_n_q] = seg_last_q;
+      f_n            = f_n + 3'd1;
+    end
+    f_lasts = 3'(f_seq[0]) + 3'(f_seq[1]) + 3'(f_seq[2]) + 3'(f_seq[3]);
+    f_young = (f_n == '0) || f_seq[f_n - 3'd1];
+    f_young_none = f_n == '0;
+    f_held  = 3'(act_q) + f_lasts - 3'(done_o);
+  end
+
+  core_contract #(
+    .AXES  (AXES),
+    .TIM_W (TIM_W),
+    .CAP   (3),
+    .HELD_W(3)
+  ) u_contract (
+    .clk_i,
+    .rst_ni,
+    .cmd_valid_i,
+    .cmd_ready_o,
+    .abort_i,
+    .step_len_i,
+    .step_o,
+    .busy_o,
+    .done_o,
+    .held_i(f_held)
+  );
+
+  always_comb begin
+    if (rst_ni) begin
+      // The tags follow the fine stage's segments one for one (a segment's
+      // tag goes on the clock after its done).
+      a_tags: assert(tag_n_q == f_fine_held + 2'(fine_done));
+      // A segment that does not end its curve is followed by one of the same
+      // curve, or the curve is still being computed; one that ends its curve
+      // by the first of a later curve (every curve has two segments or more).
+      a_young: assert(f_young || act_q);
+      a_order: assert(!(f_seq[0] && f_seq[1]) && !(f_seq[1] && f_seq[2]) &&
+                      !(f_seq[2] && f_seq[3]));
+      // The program: the decoded operation is the one at pc_q, and a curve
+      // whose predecessor's last segment is still the youngest in flight has
+      // not yet passed its first (odd) point.
+      a_pc: assert(pc_q <= 6'd42 && op == f_ent[19:17] && sh == f_ent[1:0]);
+      a_first: assert(!act_q || f_young_none || !f_young || pc_q <= 6'd33);
+    end
+  end
+`endif
 endmodule

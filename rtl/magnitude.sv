@@ -17,6 +17,14 @@ module magnitude #(
   output logic [W-1:0] mag_o,  // |x|, unsigned
   output logic         neg_o   // x < 0
 );
+  // Parameter check at elaboration: Verilator and Yosys stop with the message
+  // (Icarus 11 has no elaboration system tasks: it skips the check).
+`ifndef __ICARUS__
+  if (W < 2) begin : g_bad_w
+    $error("magnitude: parameter W must be >= 2");
+  end
+`endif
+
   logic [W-1:0] low;  // x[W-2:0] - neg; bit W-1: neg ^ the carry out of the bits below
 
   assign neg_o = x_i[W-1];

@@ -59,13 +59,13 @@
 //
 // Per-axis vectors are flat with `+:` slices (Yosys 0.23, Icarus 11).
 module motion_top #(
-  parameter int AXES    = 3,   // axes: 3 (X Y Z) or 4 (X Y Z A); the arc planes use axes 0-2
-  parameter int ACC_W   = 32,  // signed line and slaved delta width; the DDA accumulators
-  parameter int COORD_W = 24,  // signed arc coordinate width
-  parameter int OPS_W   = 28,  // arc operation count width (< ACC_W)
-  parameter int POS_W   = 32,  // position counter width (wraps)
-  parameter int TIM_W   = 16,  // width of the step/dir timing settings
-  parameter int FEED_W  = 16   // feed phase width; feed words are FEED_W + 1 bits
+  parameter int AXES    = 3,   // axes: 3 (X Y Z) to 6; the arc planes use axes 0-2
+  parameter int ACC_W   = 32,  // signed line and slaved delta width; the DDA accumulators (4..62)
+  parameter int COORD_W = 24,  // signed arc coordinate width (3..60)
+  parameter int OPS_W   = 28,  // arc operation count width (1..ACC_W - 1)
+  parameter int POS_W   = 32,  // position counter width (2..64; wraps)
+  parameter int TIM_W   = 16,  // width of the step/dir timing settings (>= 2)
+  parameter int FEED_W  = 16   // feed phase width (>= 1); feed words are FEED_W + 1 bits
 ) (
   input  logic                    clk_i,         // clock
   input  logic                    rst_ni,        // asynchronous, active low
@@ -97,14 +97,44 @@ module motion_top #(
   localparam int PREP_W = 6 * COORD_W + 4;  // the arc's s, e, E (rtl/ppc_arc_prep.sv)
 
   // ---------------------------------------------------------------------------
+  // Parameter checks at elaboration: Verilator and Yosys stop with the
+  // message (Icarus 11 has no elaboration system tasks: it skips them).
+  // OPS_W < ACC_W: a slaved axis's accumulator holds the modulus N; the
+  // other bounds are the range the HLS face (hls/motion_top.h,
+  // hls/ppc_arc_engine.h), and so the lockstep verification, covers.
+`ifndef __ICARUS__
+  if (AXES < 3 || AXES > 6) begin : g_bad_axes
+    $error("motion_top: parameter AXES must be 3..6");
+  end
+  if (ACC_W < 4 || ACC_W > 62) begin : g_bad_acc_w
+    $error("motion_top: parameter ACC_W must be 4..62");
+  end
+  if (COORD_W < 3 || COORD_W > 60) begin : g_bad_coord_w
+    $error("motion_top: parameter COORD_W must be 3..60");
+  end
+  if (OPS_W < 1 || OPS_W >= ACC_W) begin : g_bad_ops_w
+    $error("motion_top: parameter OPS_W must be 1..ACC_W - 1");
+  end
+  if (POS_W < 2 || POS_W > 64) begin : g_bad_pos_w
+    $error("motion_top: parameter POS_W must be 2..64");
+  end
+  if (TIM_W < 2) begin : g_bad_tim_w
+    $error("motion_top: parameter TIM_W must be >= 2");
+  end
+  if (FEED_W < 1) begin : g_bad_feed_w
+    $error("motion_top: parameter FEED_W must be >= 1");
+  end
+`endif
+
+  // ---------------------------------------------------------------------------
   // Buffer A: the taken command, magnitudes and the arc's prep.
   logic                  a_valid_q, a_valid_d;
-  logic                  a_arc_q, a_ccw_q;
-  logic [1:0]            a_plane_q;
-  logic [ACC_W-1:0]      a_any_q;  // OR of the magnitudes
-  logic [ACC_W-1:0]      a_negn_q;  // 2^ACC_W - N
-  logic [FEED_W:0]       a_feed_q;
-  logic [PREP_W-1:0]     a_prep_q;
+  logic                  a_arc_q, a_arc_d, a_ccw_q, a_ccw_d;
+  logic [1:0]            a_plane_q, a_plane_d;
+  logic [ACC_W-1:0]      a_any_q, a_any_d;  // OR of the magnitudes
+  logic [ACC_W-1:0]      a_negn_q, a_negn_d;  // 2^ACC_W - N
+  logic [FEED_W:0]       a_feed_q, a_feed_d;
+  logic [PREP_W-1:0]     a_prep_q, a_prep_d;
   logic                  cmd_take;
   logic                  a_to_b;
   logic [AXES*ACC_W-1:0] cmd_mag;
@@ -133,12 +163,12 @@ module motion_top #(
   // line; 2^ACC_W - ceil(N/2) for an arc, i.e. err = floor(N/2)), and per axis
   // dc (in the slices below).
   logic                  b_valid_q, b_valid_d;
-  logic                  b_arc_q, b_ccw_q;
-  logic [1:0]            b_plane_q;
-  logic [ACC_W-1:0]      b_low_q, b_a0_q;
-  logic                  b_low_zero_q;
-  logic [FEED_W:0]       b_feed_q;
-  logic [PREP_W-1:0]     b_prep_q;
+  logic                  b_arc_q, b_arc_d, b_ccw_q, b_ccw_d;
+  logic [1:0]            b_plane_q, b_plane_d;
+  logic [ACC_W-1:0]      b_low_q, b_low_d, b_a0_q, b_a0_d;
+  logic                  b_low_zero_q, b_low_zero_d;
+  logic [FEED_W:0]       b_feed_q, b_feed_d;
+  logic [PREP_W-1:0]     b_prep_q, b_prep_d;
   logic [ACC_W-1:0]      a_low, a_hm, a_top;
   logic                  load;  // the engine loads buffer B this clock
 
@@ -154,14 +184,14 @@ module motion_top #(
   // ---------------------------------------------------------------------------
   // Engine.
   logic            act_q, act_d;  // a command is running
-  logic            arc_q;  // ...an arc
-  logic [AXES-1:0] on_x_q, on_y_q;  // the axis is the running arc's x / y
+  logic            arc_q, arc_d;  // ...an arc
+  logic [AXES-1:0] on_x_q, on_x_d, on_y_q, on_y_d;  // the axis is the running arc's x / y
   logic [ACC_W-1:0] left_q, left_d;  // a line's iterations after this one
   logic            left_zero_q, left_zero_d;
   logic            pre_load;  // the next add is a load's: buffer B waits and the engine is idle or ends
-  logic [FEED_W:0] feed_q;  // the running move's feed word
-  logic            hold_q;  // feed_i was 0
-  logic            done_q;
+  logic [FEED_W:0] feed_q, feed_d;  // the running move's feed word
+  logic            hold_q, hold_d;  // feed_i was 0
+  logic            done_q, done_d;
   logic [AXES-1:0] dda_carry, carry, want_valid, want_dir, ready;
   logic [AXES-1:0] unused_block;  // the stage's block_o (READY_Q = 1 only)
   logic [AXES-1:0] unused_carry_next;  // the DDA axes' carry_next_o (for READY_Q = 1 only)
@@ -230,6 +260,60 @@ module motion_top #(
   assign b_valid_d   = advance ? bv_adv : bv_idle;
   assign a_valid_d   = !abort_i && (cmd_take || (a_valid_q && !a_to_b));
 
+  // Buffer A takes the offered command, buffer B buffer A's (normalised), the
+  // engine buffer B's on a load.
+  always_comb begin
+    a_arc_d      = a_arc_q;
+    a_ccw_d      = a_ccw_q;
+    a_plane_d    = a_plane_q;
+    a_any_d      = a_any_q;
+    a_negn_d     = a_negn_q;
+    a_feed_d     = a_feed_q;
+    a_prep_d     = a_prep_q;
+    if (cmd_take) begin
+      a_arc_d   = cmd_arc_i;
+      a_ccw_d   = cmd_ccw_i;
+      a_plane_d = cmd_plane_i;
+      a_any_d   = cmd_any;
+      a_negn_d  = ACC_W'(0) - ACC_W'(cmd_ops_i);
+      a_feed_d  = cmd_feed_i;
+      a_prep_d  = cmd_prep;
+    end
+    b_arc_d      = b_arc_q;
+    b_ccw_d      = b_ccw_q;
+    b_plane_d    = b_plane_q;
+    b_low_d      = b_low_q;
+    b_low_zero_d = b_low_zero_q;
+    b_a0_d       = b_a0_q;
+    b_feed_d     = b_feed_q;
+    b_prep_d     = b_prep_q;
+    if (a_to_b) begin
+      b_arc_d      = a_arc_q;
+      b_ccw_d      = a_ccw_q;
+      b_plane_d    = a_plane_q;
+      b_low_d      = a_arc_q ? '0 : a_low;
+      b_low_zero_d = a_arc_q || (a_any_q == '0);
+      // An arc: -N >>> 1 = -ceil(N/2).
+      b_a0_d       = a_arc_q ? {a_negn_q[ACC_W-1], a_negn_q[ACC_W-1:1]} : a_hm;
+      b_feed_d     = a_feed_q;
+      b_prep_d     = a_prep_q;
+    end
+    arc_d  = arc_q;
+    feed_d = feed_q;
+    on_x_d = on_x_q;
+    on_y_d = on_y_q;
+    if (load) begin
+      arc_d  = b_arc_q;
+      feed_d = b_feed_q;
+      for (int i = 0; i < AXES; i++) begin
+        on_x_d[i] = b_arc_q && (i == (b_plane_q == 2'd0 ? 0 : b_plane_q == 2'd1 ? 2 : 1));
+        on_y_d[i] = b_arc_q && (i == (b_plane_q == 2'd0 ? 1 : b_plane_q == 2'd1 ? 0 : 2));
+      end
+    end
+    hold_d = feed_i == '0;
+    done_d = last;
+  end
+
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       a_valid_q    <= 1'b0;
@@ -259,41 +343,32 @@ module motion_top #(
       hold_q       <= 1'b1;
       done_q       <= 1'b0;
     end else begin
-      a_valid_q <= a_valid_d;
-      if (cmd_take) begin
-        a_arc_q   <= cmd_arc_i;
-        a_ccw_q   <= cmd_ccw_i;
-        a_plane_q <= cmd_plane_i;
-        a_any_q   <= cmd_any;
-        a_negn_q  <= ACC_W'(0) - ACC_W'(cmd_ops_i);
-        a_feed_q  <= cmd_feed_i;
-        a_prep_q  <= cmd_prep;
-      end
-      b_valid_q <= b_valid_d;
-      if (a_to_b) begin
-        b_arc_q      <= a_arc_q;
-        b_ccw_q      <= a_ccw_q;
-        b_plane_q    <= a_plane_q;
-        b_low_q      <= a_arc_q ? '0 : a_low;
-        b_low_zero_q <= a_arc_q || (a_any_q == '0);
-        // An arc: -N >>> 1 = -ceil(N/2).
-        b_a0_q       <= a_arc_q ? {a_negn_q[ACC_W-1], a_negn_q[ACC_W-1:1]} : a_hm;
-        b_feed_q     <= a_feed_q;
-        b_prep_q     <= a_prep_q;
-      end
-      act_q       <= act_d;
-      left_q      <= left_d;
-      left_zero_q <= left_zero_d;
-      if (load) begin
-        arc_q  <= b_arc_q;
-        feed_q <= b_feed_q;
-        for (int i = 0; i < AXES; i++) begin
-          on_x_q[i] <= b_arc_q && (i == (b_plane_q == 2'd0 ? 0 : b_plane_q == 2'd1 ? 2 : 1));
-          on_y_q[i] <= b_arc_q && (i == (b_plane_q == 2'd0 ? 1 : b_plane_q == 2'd1 ? 0 : 2));
-        end
-      end
-      hold_q <= feed_i == '0;
-      done_q <= last;
+      a_valid_q    <= a_valid_d;
+      a_arc_q      <= a_arc_d;
+      a_ccw_q      <= a_ccw_d;
+      a_plane_q    <= a_plane_d;
+      a_any_q      <= a_any_d;
+      a_negn_q     <= a_negn_d;
+      a_feed_q     <= a_feed_d;
+      a_prep_q     <= a_prep_d;
+      b_valid_q    <= b_valid_d;
+      b_arc_q      <= b_arc_d;
+      b_ccw_q      <= b_ccw_d;
+      b_plane_q    <= b_plane_d;
+      b_low_q      <= b_low_d;
+      b_a0_q       <= b_a0_d;
+      b_low_zero_q <= b_low_zero_d;
+      b_feed_q     <= b_feed_d;
+      b_prep_q     <= b_prep_d;
+      act_q        <= act_d;
+      arc_q        <= arc_d;
+      on_x_q       <= on_x_d;
+      on_y_q       <= on_y_d;
+      left_q       <= left_d;
+      left_zero_q  <= left_zero_d;
+      feed_q       <= feed_d;
+      hold_q       <= hold_d;
+      done_q       <= done_d;
     end
   end
 
@@ -301,10 +376,10 @@ module motion_top #(
   // Per-axis slices: magnitude, buffers, the DDA axis, and the step request
   // (the arc engine's on the running arc's plane axes).
   for (genvar i = 0; i < AXES; i++) begin : g_axis
-    logic [ACC_W-1:0] delta, a_mag_q, b_mag_q;
-    logic [ACC_W:0]   b_dc_q;  // up to 2^ACC_W: a slaved axis that steps every operation
-    logic             cmd_neg, a_neg_q, b_neg_q, neg_q;
-    logic             a_moves_q, b_moves_q, moves_q, moves_d;
+    logic [ACC_W-1:0] delta, a_mag_q, a_mag_d, b_mag_q, b_mag_d;
+    logic [ACC_W:0]   b_dc_q, b_dc_d;  // up to 2^ACC_W: a slaved axis that steps every operation
+    logic             cmd_neg, a_neg_q, a_neg_d, b_neg_q, b_neg_d, neg_q, neg_d;
+    logic             a_moves_q, a_moves_d, b_moves_q, b_moves_d, moves_q, moves_d;
 
     assign delta = cmd_delta_i[i*ACC_W +: ACC_W];
     magnitude #(
@@ -338,6 +413,17 @@ module motion_top #(
     assign want_dir[i]   = on_x_q[i] ? eng_want_dir[0] : on_y_q[i] ? eng_want_dir[1] : neg_q;
     assign moves_d       = advance ? (pre_load ? b_moves_q : moves_q && !cur_last) :
                                      (idle_load ? b_moves_q : moves_q && !abort_i);
+    assign a_mag_d       = cmd_take ? cmd_mag[i*ACC_W +: ACC_W] : a_mag_q;
+    assign a_neg_d       = cmd_take ? cmd_neg : a_neg_q;
+    assign a_moves_d     = cmd_take ? delta != '0 : a_moves_q;
+    assign b_mag_d       = a_to_b ? a_mag_q : b_mag_q;
+    // dc = |delta| + 2^ACC_W - K: | hm for a line, - N for an arc
+    // (|delta| <= N: 2^ACC_W at most).
+    assign b_dc_d        = !a_to_b ? b_dc_q :
+                           a_arc_q ? {1'b0, a_mag_q} + {1'b0, a_negn_q} : {1'b0, a_mag_q | a_hm};
+    assign b_neg_d       = a_to_b ? a_neg_q : b_neg_q;
+    assign b_moves_d     = a_to_b ? a_moves_q : b_moves_q;
+    assign neg_d         = load ? b_neg_q : neg_q;
 
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
@@ -351,21 +437,15 @@ module motion_top #(
         neg_q     <= 1'b0;
         moves_q   <= 1'b0;
       end else begin
-        if (cmd_take) begin
-          a_mag_q   <= cmd_mag[i*ACC_W +: ACC_W];
-          a_neg_q   <= cmd_neg;
-          a_moves_q <= delta != '0;
-        end
-        if (a_to_b) begin
-          b_mag_q   <= a_mag_q;
-          // dc = |delta| + 2^ACC_W - K: | hm for a line, - N for an arc
-          // (|delta| <= N: 2^ACC_W at most).
-          b_dc_q    <= a_arc_q ? {1'b0, a_mag_q} + {1'b0, a_negn_q} : {1'b0, a_mag_q | a_hm};
-          b_neg_q   <= a_neg_q;
-          b_moves_q <= a_moves_q;
-        end
-        if (load) neg_q <= b_neg_q;
-        moves_q <= moves_d;
+        a_mag_q   <= a_mag_d;
+        a_neg_q   <= a_neg_d;
+        a_moves_q <= a_moves_d;
+        b_mag_q   <= b_mag_d;
+        b_dc_q    <= b_dc_d;
+        b_neg_q   <= b_neg_d;
+        b_moves_q <= b_moves_d;
+        neg_q     <= neg_d;
+        moves_q   <= moves_d;
       end
     end
   end
@@ -397,4 +477,54 @@ module motion_top #(
 
   assign busy_o = act_q || a_valid_q || b_valid_q || (|step_o);
   assign done_o = done_q;
+
+`ifdef FORMAL
+  // ---------------------------------------------------------------------------
+  // Formal (scripts/formal.sh, rtl/formal/motion_top_props.sv): the port
+  // contract every core shares (rtl/formal/core_contract.sv) with the
+  // commands buffers A and B and the engine hold, and the invariants of the
+  // registers it rests on.
+  logic [1:0] f_held;
+  assign f_held = 2'(a_valid_q) + 2'(b_valid_q) + 2'(act_q);
+
+  core_contract #(
+    .AXES  (AXES),
+    .TIM_W (TIM_W),
+    .CAP   (3),
+    .HELD_W(2)
+  ) u_contract (
+    .clk_i,
+    .rst_ni,
+    .cmd_valid_i,
+    .cmd_ready_o,
+    .abort_i,
+    .step_len_i,
+    .step_o,
+    .busy_o,
+    .done_o,
+    .held_i(f_held)
+  );
+
+  logic [FEED_W:0] f_feed;  // u_feed's feed_i
+  assign f_feed = hold_q ? '0 : (pre_load ? b_feed_q : feed_q);
+  // Progress: while a command runs with full feed (the feed word the feed
+  // accumulator samples >= 2^FEED_W on the clock before) and no abort, the
+  // engine advances on every clock but one on which an axis its operation steps
+  // is not ready: it waits for the step/dir timing only, and
+  // rtl/formal/stepdir_axis_props.sv proves that ready_o waits for exactly that
+  // (never longer; dir_o turns as soon as the hold allows).
+  logic f_full_q, f_full_d;
+  assign f_full_d = f_feed[FEED_W];
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) f_full_q <= 1'b0;
+    else f_full_q <= f_full_d;
+  end
+
+  always_comb begin
+    if (rst_ni) begin
+      a_progress: assert(!(act_q && f_full_q && !abort_i) || advance || (carry & ~ready) != '0);
+      a_tick: assert(!tick || act_q);
+    end
+  end
+`endif
 endmodule

@@ -29,10 +29,10 @@
 // Per-axis vectors are flat with `+:` slices (Yosys 0.23, Icarus 11).
 module ppc_arc #(
   parameter int AXES    = 2,   // axes: must be 2 (a planar method)
-  parameter int COORD_W = 24,  // width of the command's signed coordinates
-  parameter int POS_W   = 32,  // position counter width (wraps)
-  parameter int TIM_W   = 16,  // width of the step/dir timing settings and counters
-  parameter int FEED_W  = 16   // feed phase width; feed_i = 2^FEED_W is full feed
+  parameter int COORD_W = 24,  // width of the command's signed coordinates (3..60)
+  parameter int POS_W   = 32,  // position counter width (2..64; wraps)
+  parameter int TIM_W   = 16,  // width of the step/dir timing settings and counters (>= 2)
+  parameter int FEED_W  = 16   // feed phase width (>= 1); feed_i = 2^FEED_W is full feed
 ) (
   input  logic                    clk_i,         // clock
   input  logic                    rst_ni,        // asynchronous, active low
@@ -59,10 +59,33 @@ module ppc_arc #(
   localparam int PREP_W = 6 * COORD_W + 4;  // rtl/ppc_arc_prep.sv
 
   // ---------------------------------------------------------------------------
+  // Parameter checks at elaboration: Verilator and Yosys stop with the
+  // message (Icarus 11 has no elaboration system tasks: it skips them). The
+  // upper bounds are the range the HLS face (hls/ppc_arc.h), and so the
+  // lockstep verification, covers.
+`ifndef __ICARUS__
+  if (AXES != 2) begin : g_bad_axes
+    $error("ppc_arc: parameter AXES must be 2");
+  end
+  if (COORD_W < 3 || COORD_W > 60) begin : g_bad_coord_w
+    $error("ppc_arc: parameter COORD_W must be 3..60");
+  end
+  if (POS_W < 2 || POS_W > 64) begin : g_bad_pos_w
+    $error("ppc_arc: parameter POS_W must be 2..64");
+  end
+  if (TIM_W < 2) begin : g_bad_tim_w
+    $error("ppc_arc: parameter TIM_W must be >= 2");
+  end
+  if (FEED_W < 1) begin : g_bad_feed_w
+    $error("ppc_arc: parameter FEED_W must be >= 1");
+  end
+`endif
+
+  // ---------------------------------------------------------------------------
   // Command buffer (one entry): s, e, E (rtl/ppc_arc_prep.sv) and the direction.
   logic              buf_valid_q, buf_valid_d;
-  logic [PREP_W-1:0] buf_prep_q, cmd_prep;
-  logic              buf_ccw_q;
+  logic [PREP_W-1:0] buf_prep_q, buf_prep_d, cmd_prep;
+  logic              buf_ccw_q, buf_ccw_d;
   logic              cmd_take;  // a command is taken this clock
   logic              buf_take;  // the engine loads the buffer this clock
 
@@ -80,7 +103,7 @@ module ppc_arc #(
   // ---------------------------------------------------------------------------
   // Engine.
   logic            act_q, act_d;  // a command is running
-  logic            done_q;
+  logic            done_q, done_d;
   logic            step_x, step_y, eng_last;
   logic [AXES-1:0] carry;  // this operation steps the axis
   logic [AXES-1:0] want_valid;  // the running command may step the axis
@@ -130,6 +153,9 @@ module ppc_arc #(
     if (buf_take) act_d = 1'b1;
     if (abort_i) act_d = 1'b0;
     buf_valid_d = !abort_i && (cmd_take || (buf_valid_q && !buf_take));
+    buf_prep_d  = cmd_take ? cmd_prep : buf_prep_q;
+    buf_ccw_d   = cmd_take ? cmd_ccw_i : buf_ccw_q;
+    done_d      = last;
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -141,12 +167,10 @@ module ppc_arc #(
       done_q      <= 1'b0;
     end else begin
       buf_valid_q <= buf_valid_d;
-      if (cmd_take) begin
-        buf_prep_q <= cmd_prep;
-        buf_ccw_q  <= cmd_ccw_i;
-      end
-      act_q  <= act_d;
-      done_q <= last;
+      buf_prep_q  <= buf_prep_d;
+      buf_ccw_q   <= buf_ccw_d;
+      act_q       <= act_d;
+      done_q      <= done_d;
     end
   end
 
@@ -177,4 +201,51 @@ module ppc_arc #(
 
   assign busy_o = act_q || buf_valid_q || (|step_o);
   assign done_o = done_q;
+
+`ifdef FORMAL
+  // ---------------------------------------------------------------------------
+  // Formal (scripts/formal.sh, rtl/formal/ppc_arc_props.sv): the port
+  // contract every core shares (rtl/formal/core_contract.sv) with the
+  // commands the buffer and the engine hold, and the invariants of the
+  // registers it rests on.
+  logic [1:0] f_held;
+  assign f_held = 2'(buf_valid_q) + 2'(act_q);
+
+  core_contract #(
+    .AXES  (AXES),
+    .TIM_W (TIM_W),
+    .CAP   (2),
+    .HELD_W(2)
+  ) u_contract (
+    .clk_i,
+    .rst_ni,
+    .cmd_valid_i,
+    .cmd_ready_o,
+    .abort_i,
+    .step_len_i,
+    .step_o,
+    .busy_o,
+    .done_o,
+    .held_i(f_held)
+  );
+
+  // Progress: while a command runs with full feed (feed_i >= 2^FEED_W on the
+  // clock before) and no abort, the engine advances on every clock but one on
+  // which an axis its operation steps is not ready: it waits for the step/dir
+  // timing only, and rtl/formal/stepdir_axis_props.sv proves that ready_o waits
+  // for exactly that (never longer; dir_o turns as soon as the hold allows).
+  logic f_full_q, f_full_d;
+  assign f_full_d = feed_i[FEED_W];
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) f_full_q <= 1'b0;
+    else f_full_q <= f_full_d;
+  end
+
+  always_comb begin
+    if (rst_ni) begin
+      a_progress: assert(!(act_q && f_full_q && !abort_i) || advance || (carry & ~ready) != '0);
+      a_tick: assert(!tick || act_q);
+    end
+  end
+`endif
 endmodule

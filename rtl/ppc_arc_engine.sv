@@ -59,7 +59,7 @@
 // Every output is a function of the registers and run_i (none of advance_i).
 // hls/ppc_arc_engine.h is the same engine in C++.
 module ppc_arc_engine #(
-  parameter int COORD_W = 24  // width of the command's signed coordinates
+  parameter int COORD_W = 24  // width of the command's signed coordinates (3..60)
 ) (
   input  logic                 clk_i,         // clock
   input  logic                 rst_ni,        // asynchronous, active low
@@ -74,6 +74,16 @@ module ppc_arc_engine #(
   output logic [1:0]           want_dir_o,    // the axis's direction, 1: negative (x bit 0)
   output logic                 last_o         // this clock's operation is the command's last
 );
+  // Parameter check at elaboration: Verilator and Yosys stop with the message
+  // (Icarus 11 has no elaboration system tasks: it skips the check). The
+  // range is the HLS face's (hls/ppc_arc_engine.h), and so the lockstep
+  // verification's.
+`ifndef __ICARUS__
+  if (COORD_W < 3 || COORD_W > 60) begin : g_bad_coord_w
+    $error("ppc_arc_engine: parameter COORD_W must be 3..60");
+  end
+`endif
+
   localparam int PW = COORD_W + 1;  // s, e, a = p m
   localparam int GW = COORD_W + 2;  // g = (e - p) m
   localparam int FW = COORD_W + 2;  // F = |p|^2 - |s|^2
@@ -324,4 +334,29 @@ module ppc_arc_engine #(
       gone_q <= gone_d;
     end
   end
+
+`ifdef FORMAL
+  // Formal (scripts/formal.sh, in ppc_arc's and motion_top's proofs): each
+  // flag equals the compare of the register it stands for, at every clock
+  // while no g has been the most negative GW-bit value (where g - 1 and -g
+  // wrap; no command the widths above accept comes near it, but the proof
+  // has no bound on g: the circle is not in the state).
+  localparam logic [GW-1:0] GMin = {1'b1, {(GW - 1) {1'b0}}};
+  logic f_g_ok, f_g_ok_q, f_g_ok_d;
+  assign f_g_ok   = f_g_ok_q && gx_q != GMin && gy_q != GMin;
+  assign f_g_ok_d = f_g_ok;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) f_g_ok_q <= 1'b1;
+    else f_g_ok_q <= f_g_ok_d;
+  end
+  always_comb begin
+    if (rst_ni) begin
+      a_arc_flags: assert(!f_g_ok || (
+          am1_q == {ay_q == PMinus1, ax_q == PMinus1} &&
+          gz_q == {gy_q == '0, gx_q == '0} &&
+          gone_q == {gy_q == GW'(1), gx_q == GW'(1)} &&
+          gle0_q == {gy_q[GW-1] || gy_q == '0, gx_q[GW-1] || gx_q == '0}));
+    end
+  end
+`endif
 endmodule

@@ -10,12 +10,21 @@
 // Users: rtl/ppc_arc.sv and rtl/motion_top.sv; hls/ppc_arc_engine.h
 // (PpcArcEngine::prepare) is the same in C++.
 module ppc_arc_prep #(
-  parameter int COORD_W = 24  // width of the signed coordinates
+  parameter int COORD_W = 24  // width of the signed coordinates (3..60)
 ) (
   input  logic [2*COORD_W-1:0] center_i,  // centre - start: x at [0 +: COORD_W], y above
   input  logic [2*COORD_W-1:0] end_i,     // end - start: x at [0 +: COORD_W], y above
   output logic [6*COORD_W+3:0] prep_o     // s, e, E as above
 );
+  // Parameter check at elaboration: Verilator and Yosys stop with the message
+  // (Icarus 11 has no elaboration system tasks: it skips the check). The
+  // range is rtl/ppc_arc_engine.sv's, which loads what this module prepares.
+`ifndef __ICARUS__
+  if (COORD_W < 3 || COORD_W > 60) begin : g_bad_coord_w
+    $error("ppc_arc_prep: parameter COORD_W must be 3..60");
+  end
+`endif
+
   localparam int PW = COORD_W + 1;
 
   for (genvar i = 0; i < 2; i++) begin : g_axis

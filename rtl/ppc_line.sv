@@ -38,10 +38,10 @@
 // would wrap it). dir_o = 1: negative motion.
 module ppc_line #(
   parameter int AXES   = 2,   // axes: must be 2 (PPC is a planar method)
-  parameter int ACC_W  = 32,  // width of each signed delta of cmd_delta_i
-  parameter int POS_W  = 32,  // position counter width (wraps)
-  parameter int TIM_W  = 16,  // width of the step/dir timing settings and counters
-  parameter int FEED_W = 16   // feed phase width; feed_i = 2^FEED_W is full feed
+  parameter int ACC_W  = 32,  // width of each signed delta of cmd_delta_i (3..62)
+  parameter int POS_W  = 32,  // position counter width (2..64; wraps)
+  parameter int TIM_W  = 16,  // width of the step/dir timing settings and counters (>= 2)
+  parameter int FEED_W = 16   // feed phase width (>= 1); feed_i = 2^FEED_W is full feed
 ) (
   input  logic                  clk_i,         // clock
   input  logic                  rst_ni,        // asynchronous, active low
@@ -64,10 +64,34 @@ module ppc_line #(
   output logic                  done_o         // one clock per completed command
 );
   // ---------------------------------------------------------------------------
+  // Parameter checks at elaboration: Verilator and Yosys stop with the
+  // message (Icarus 11 has no elaboration system tasks: it skips them).
+  // ACC_W >= 3: the line engine's flags read bits 2 and up
+  // (rtl/ppc_line_step.sv); the upper bounds are the range the HLS face
+  // (hls/ppc_line.h), and so the lockstep verification, covers.
+`ifndef __ICARUS__
+  if (AXES != 2) begin : g_bad_axes
+    $error("ppc_line: parameter AXES must be 2");
+  end
+  if (ACC_W < 3 || ACC_W > 62) begin : g_bad_acc_w
+    $error("ppc_line: parameter ACC_W must be 3..62");
+  end
+  if (POS_W < 2 || POS_W > 64) begin : g_bad_pos_w
+    $error("ppc_line: parameter POS_W must be 2..64");
+  end
+  if (TIM_W < 2) begin : g_bad_tim_w
+    $error("ppc_line: parameter TIM_W must be >= 2");
+  end
+  if (FEED_W < 1) begin : g_bad_feed_w
+    $error("ppc_line: parameter FEED_W must be >= 1");
+  end
+`endif
+
+  // ---------------------------------------------------------------------------
   // Command buffer (one entry): magnitudes and signs of the taken command.
   logic             buf_valid_q, buf_valid_d;
-  logic [ACC_W-1:0] buf_ax_q, buf_ay_q;  // |dx|, |dy|
-  logic [AXES-1:0]  buf_neg_q;  // sign of dx (bit 0), dy (bit 1)
+  logic [ACC_W-1:0] buf_ax_q, buf_ax_d, buf_ay_q, buf_ay_d;  // |dx|, |dy|
+  logic [AXES-1:0]  buf_neg_q, buf_neg_d;  // sign of dx (bit 0), dy (bit 1)
   logic             cmd_take;  // a command is taken this clock
   logic             buf_take;  // the engine loads the buffer this clock
   logic [ACC_W-1:0] cmd_dx, cmd_dy;
@@ -80,8 +104,8 @@ module ppc_line #(
   // ---------------------------------------------------------------------------
   // Engine: the PPC line, the feed and the directions.
   logic            act_q, act_d;  // a command is running
-  logic [AXES-1:0] neg_q;  // directions of the running command
-  logic            done_q;
+  logic [AXES-1:0] neg_q, neg_d;  // directions of the running command
+  logic            done_q, done_d;
   logic            x_left, y_left, step_x, step_y, line_last;
   logic [AXES-1:0] carry;  // this operation steps the axis
   logic [AXES-1:0] ready;  // the axis may start a pulse on the next clock
@@ -130,6 +154,17 @@ module ppc_line #(
     if (buf_take) act_d = 1'b1;
     if (abort_i) act_d = 1'b0;
     buf_valid_d = !abort_i && (cmd_take || (buf_valid_q && !buf_take));
+    buf_ax_d    = buf_ax_q;
+    buf_ay_d    = buf_ay_q;
+    buf_neg_d   = buf_neg_q;
+    if (cmd_take) begin
+      // |-2^(ACC_W-1)| = 2^(ACC_W-1) still fits ACC_W unsigned bits.
+      buf_ax_d  = cmd_dx[ACC_W-1] ? ACC_W'(-cmd_dx) : cmd_dx;
+      buf_ay_d  = cmd_dy[ACC_W-1] ? ACC_W'(-cmd_dy) : cmd_dy;
+      buf_neg_d = {cmd_dy[ACC_W-1], cmd_dx[ACC_W-1]};
+    end
+    neg_d  = buf_take ? buf_neg_q : neg_q;
+    done_d = last;
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
@@ -143,15 +178,12 @@ module ppc_line #(
       done_q      <= 1'b0;
     end else begin
       buf_valid_q <= buf_valid_d;
-      if (cmd_take) begin
-        // |-2^(ACC_W-1)| = 2^(ACC_W-1) still fits ACC_W unsigned bits.
-        buf_ax_q  <= cmd_dx[ACC_W-1] ? ACC_W'(-cmd_dx) : cmd_dx;
-        buf_ay_q  <= cmd_dy[ACC_W-1] ? ACC_W'(-cmd_dy) : cmd_dy;
-        buf_neg_q <= {cmd_dy[ACC_W-1], cmd_dx[ACC_W-1]};
-      end
-      if (buf_take) neg_q <= buf_neg_q;
-      act_q  <= act_d;
-      done_q <= last;
+      buf_ax_q    <= buf_ax_d;
+      buf_ay_q    <= buf_ay_d;
+      buf_neg_q   <= buf_neg_d;
+      neg_q       <= neg_d;
+      act_q       <= act_d;
+      done_q      <= done_d;
     end
   end
 
@@ -182,4 +214,51 @@ module ppc_line #(
 
   assign busy_o = act_q || buf_valid_q || (|step_o);
   assign done_o = done_q;
+
+`ifdef FORMAL
+  // ---------------------------------------------------------------------------
+  // Formal (scripts/formal.sh, rtl/formal/ppc_line_props.sv): the port
+  // contract every core shares (rtl/formal/core_contract.sv) with the
+  // commands the buffer and the engine hold, and the invariants of the
+  // registers it rests on.
+  logic [1:0] f_held;
+  assign f_held = 2'(buf_valid_q) + 2'(act_q);
+
+  core_contract #(
+    .AXES  (AXES),
+    .TIM_W (TIM_W),
+    .CAP   (2),
+    .HELD_W(2)
+  ) u_contract (
+    .clk_i,
+    .rst_ni,
+    .cmd_valid_i,
+    .cmd_ready_o,
+    .abort_i,
+    .step_len_i,
+    .step_o,
+    .busy_o,
+    .done_o,
+    .held_i(f_held)
+  );
+
+  // Progress: while a command runs with full feed (feed_i >= 2^FEED_W on the
+  // clock before) and no abort, the engine advances on every clock but one on
+  // which an axis its operation steps is not ready: it waits for the step/dir
+  // timing only, and rtl/formal/stepdir_axis_props.sv proves that ready_o waits
+  // for exactly that (never longer; dir_o turns as soon as the hold allows).
+  logic f_full_q, f_full_d;
+  assign f_full_d = feed_i[FEED_W];
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) f_full_q <= 1'b0;
+    else f_full_q <= f_full_d;
+  end
+
+  always_comb begin
+    if (rst_ni) begin
+      a_progress: assert(!(act_q && f_full_q && !abort_i) || advance || (carry & ~ready) != '0);
+      a_tick: assert(!tick || act_q);
+    end
+  end
+`endif
 endmodule

@@ -18,9 +18,9 @@
 // multi-dimensional packed arrays; Icarus 11 cannot index them with a loop
 // variable).
 module step_stage #(
-  parameter int AXES    = 2,    // axes
-  parameter int POS_W   = 32,   // position counter width (wraps)
-  parameter int TIM_W   = 16,   // width of the timing settings and counters
+  parameter int AXES    = 2,    // axes (>= 1)
+  parameter int POS_W   = 32,   // position counter width (>= 2; wraps)
+  parameter int TIM_W   = 16,   // width of the timing settings and counters (>= 2)
   parameter bit READY_Q = 1'b0  // 1: ready_o registers, decided from want_dir_next_i (rtl/stepdir_axis.sv)
 ) (
   input  logic                  clk_i,
@@ -41,6 +41,20 @@ module step_stage #(
   output logic [AXES-1:0]       dir_o,         // 1: negative motion
   output logic [AXES*POS_W-1:0] pos_o          // axis i in bits [i*POS_W +: POS_W]
 );
+  // Parameter checks at elaboration: Verilator and Yosys stop with the
+  // message (Icarus 11 has no elaboration system tasks: it skips them).
+`ifndef __ICARUS__
+  if (AXES < 1) begin : g_bad_axes
+    $error("step_stage: parameter AXES must be >= 1");
+  end
+  if (POS_W < 2) begin : g_bad_pos_w
+    $error("step_stage: parameter POS_W must be >= 2");
+  end
+  if (TIM_W < 2) begin : g_bad_tim_w
+    $error("step_stage: parameter TIM_W must be >= 2");
+  end
+`endif
+
   logic [TIM_W-1:0] len, space, setup, hold;
   logic len_one, space_one, setup_one, hold_one, space_two, setup_two, hold_two, fresh;
 
@@ -68,12 +82,13 @@ module step_stage #(
   );
 
   for (genvar i = 0; i < AXES; i++) begin : g_axis
-    logic [POS_W-1:0] pos_q;
+    logic [POS_W-1:0] pos_q, pos_d;
 
+    // One adder: +1, or + all ones (-1) for the negative direction.
+    assign pos_d = fire_i[i] ? pos_q + {{(POS_W - 1) {want_dir_i[i]}}, 1'b1} : pos_q;
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) pos_q <= '0;
-      // One adder: +1, or + all ones (-1) for the negative direction.
-      else if (fire_i[i]) pos_q <= pos_q + {{(POS_W - 1) {want_dir_i[i]}}, 1'b1};
+      else pos_q <= pos_d;
     end
     assign pos_o[i*POS_W +: POS_W] = pos_q;
 

@@ -43,7 +43,7 @@
 // rtl/stepdir_timing.sv.
 module stepdir_axis #(
   parameter int TIM_W   = 16,   // width of the settings and counters (>= 2)
-  parameter bit READY_Q = 1'b0  // 1: ready_o a register, from want_dir_next_i
+  parameter bit READY_Q = 1'b0  // 1: ready_o a register, from want_dir_next_i (0 or 1)
 ) (
   input  logic             clk_i,
   input  logic             rst_ni,
@@ -72,6 +72,14 @@ module stepdir_axis #(
   output logic             step_o,
   output logic             dir_o
 );
+  // Parameter check at elaboration: Verilator and Yosys stop with the message
+  // (Icarus 11 has no elaboration system tasks: it skips the check).
+`ifndef __ICARUS__
+  if (TIM_W < 2) begin : g_bad_tim_w
+    $error("stepdir_axis: parameter TIM_W must be >= 2");
+  end
+`endif
+
   localparam logic [TIM_W-1:0] One = TIM_W'(1);
 
   // tim_q: while step_o is high, its cycles left, this one included; while
@@ -172,15 +180,16 @@ module stepdir_axis #(
   // is the direction wanted.
   if (READY_Q) begin : g_ready_q
     // Decided a clock ahead, for the direction wanted on the next clock.
-    logic ready_q, ready_d, block_q;
+    logic ready_q, ready_d, block_q, block_d;
     assign ready_d = pulse_nf && !fire_i && (want_dir_next_i == dir_d);
+    assign block_d = want_step_next_i && !ready_d;
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
         ready_q <= 1'b0;
         block_q <= 1'b0;
       end else begin
         ready_q <= ready_d;
-        block_q <= want_step_next_i && !ready_d;
+        block_q <= block_d;
       end
     end
     assign ready_o = ready_q;
@@ -188,16 +197,18 @@ module stepdir_axis #(
   end else begin : g_ready_mux
     // Decided a clock ahead for either direction, selected by want_dir_i.
     logic unused_next;  // no prediction in this mode
-    logic ok_pos_q, ok_neg_q;  // with dir_o = 0, with dir_o = 1
+    logic ok_pos_q, ok_pos_d, ok_neg_q, ok_neg_d;  // with dir_o = 0, with dir_o = 1
     assign unused_next = want_dir_next_i ^ want_step_next_i;
     assign block_o     = 1'b0;
+    assign ok_pos_d    = pulse_nf && !fire_i && !dir_d;
+    assign ok_neg_d    = pulse_nf && !fire_i && dir_d;
     always_ff @(posedge clk_i or negedge rst_ni) begin
       if (!rst_ni) begin
         ok_pos_q <= 1'b0;
         ok_neg_q <= 1'b0;
       end else begin
-        ok_pos_q <= pulse_nf && !fire_i && !dir_d;
-        ok_neg_q <= pulse_nf && !fire_i && dir_d;
+        ok_pos_q <= ok_pos_d;
+        ok_neg_q <= ok_neg_d;
       end
     end
     assign ready_o = want_dir_i ? ok_neg_q : ok_pos_q;
@@ -231,4 +242,24 @@ module stepdir_axis #(
 
   assign step_o = step_q;
   assign dir_o  = dir_q;
+
+`ifdef FORMAL
+  // Formal (scripts/formal.sh): the engine's side of the contract above, an
+  // assumption in rtl/formal/stepdir_axis_props.sv and step_stage_props.sv,
+  // proved in every core's proof: the engine fires only a ready axis, and
+  // with READY_Q = 1 its want_dir_next_i was right (from the second clock
+  // after reset; on the first ready_o is low).
+  logic f_want_dir_next_q, f_want_dir_next_d;
+  assign f_want_dir_next_d = want_dir_next_i;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) f_want_dir_next_q <= 1'b0;
+    else f_want_dir_next_q <= f_want_dir_next_d;
+  end
+  always_comb begin
+    if (rst_ni) begin
+      a_fire_ready: assert(!fire_i || ready_o);
+      a_dir_next: assert(!READY_Q || fresh_i || want_dir_i == f_want_dir_next_q);
+    end
+  end
+`endif
 endmodule

@@ -9,7 +9,7 @@
 // Pure wiring and a few gates from the pins: a setting applies to every phase
 // that starts on the clock that samples it, as before.
 module stepdir_timing #(
-  parameter int TIM_W = 16  // width of the timing settings and counters
+  parameter int TIM_W = 16  // width of the timing settings and counters (>= 2)
 ) (
   input  logic             clk_i,
   input  logic             rst_ni,
@@ -32,6 +32,14 @@ module stepdir_timing #(
   output logic             hold_two_o,   // hold_o <= 2
   output logic             fresh_o       // the first clock after reset
 );
+  // Parameter check at elaboration: Verilator and Yosys stop with the message
+  // (Icarus 11 has no elaboration system tasks: it skips the check).
+`ifndef __ICARUS__
+  if (TIM_W < 2) begin : g_bad_tim_w
+    $error("stepdir_timing: parameter TIM_W must be >= 2");
+  end
+`endif
+
   // v with bit 0 forced on when v == 0: the smallest change that makes 0 act as 1.
   function automatic logic [TIM_W-1:0] at_least_one(input logic [TIM_W-1:0] v);
     at_least_one = {v[TIM_W-1:1], v[0] | (v == '0)};
@@ -56,10 +64,11 @@ module stepdir_timing #(
   assign setup_two_o = le2(dir_setup_i);
   assign hold_two_o  = le2(dir_hold_i);
 
-  logic fresh_q;
+  logic fresh_q, fresh_d;
+  assign fresh_d = 1'b0;
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) fresh_q <= 1'b1;
-    else fresh_q <= 1'b0;
+    else fresh_q <= fresh_d;
   end
   assign fresh_o = fresh_q;
 endmodule

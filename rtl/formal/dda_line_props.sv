@@ -1,0 +1,72 @@
+// Formal environment of dda_line (scripts/formal.sh --blocks dda_line): the
+// core with narrow parameters and every input free on every clock (commands,
+// half preload, feed, the four timing settings, abort), reset in the first
+// cycle only. The properties are in the RTL's `ifdef FORMAL` blocks:
+//   rtl/formal/core_contract.sv  the port contract (a_link, a_cap, a_busy,
+//                                a_done, a_rise, a_abort, a_abort_len, a_len),
+//                                instantiated by rtl/dda_line.sv on its ports
+//                                and the commands its buffers and engine hold;
+//   rtl/dda_line.sv              its registers' invariants (a_pre_load,
+//                                a_tick, a_left, a_b_low) and a_progress (at
+//                                full feed the engine stalls only for an axis
+//                                not ready);
+//   rtl/dda_axis.sv              a_carry_next, per axis;
+//   rtl/stepdir_axis.sv          a_fire_ready (the engine fires only a ready
+//                                axis) and a_dir_next (READY_Q = 1: the
+//                                direction it announced a clock ahead), per axis.
+// ACC_W = 3: deltas -4..3, up to 8 iterations a command; TIM_W = 2: settings
+// 0..3, pulses up to 3 clocks.
+module dda_line_props #(
+  parameter int AXES   = 2,
+  parameter int ACC_W  = 3,
+  parameter int POS_W  = 2,
+  parameter int TIM_W  = 2,
+  parameter int FEED_W = 2
+) (
+  input logic                  clk_i,
+  input logic                  rst_ni,
+  input logic                  cmd_valid_i,
+  input logic [AXES*ACC_W-1:0] cmd_delta_i,
+  input logic [FEED_W:0]       feed_i,
+  input logic                  half_preload_i,
+  input logic [TIM_W-1:0]      step_len_i,
+  input logic [TIM_W-1:0]      step_space_i,
+  input logic [TIM_W-1:0]      dir_setup_i,
+  input logic [TIM_W-1:0]      dir_hold_i,
+  input logic                  abort_i
+);
+  logic                  cmd_ready, busy, done;
+  logic [AXES-1:0]       step, dir;
+  logic [AXES*POS_W-1:0] pos;
+
+  dda_line #(
+    .AXES  (AXES),
+    .ACC_W (ACC_W),
+    .POS_W (POS_W),
+    .TIM_W (TIM_W),
+    .FEED_W(FEED_W)
+  ) dut (
+    .clk_i,
+    .rst_ni,
+    .cmd_valid_i,
+    .cmd_ready_o(cmd_ready),
+    .cmd_delta_i,
+    .feed_i,
+    .half_preload_i,
+    .step_len_i,
+    .step_space_i,
+    .dir_setup_i,
+    .dir_hold_i,
+    .abort_i,
+    .step_o     (step),
+    .dir_o      (dir),
+    .pos_o      (pos),
+    .busy_o     (busy),
+    .done_o     (done)
+  );
+
+  // Reset in the first cycle only.
+  logic f_init = 1'b1;
+  always_ff @(posedge clk_i) f_init <= 1'b0;
+  always_comb assume(rst_ni == !f_init);
+endmodule

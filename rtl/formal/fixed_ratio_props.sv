@@ -1,0 +1,71 @@
+// Formal environment of fixed_ratio (scripts/formal.sh --blocks
+// fixed_ratio): the core with narrow parameters and every input free on every
+// clock (commands, feed, the four timing settings, abort), reset in the first
+// cycle only. The properties are in the RTL's `ifdef FORMAL` blocks:
+//   rtl/formal/core_contract.sv  the port contract (a_link, a_cap, a_busy,
+//                                a_done, a_rise, a_abort, a_abort_len, a_len),
+//                                instantiated by rtl/fixed_ratio.sv on its
+//                                ports and the commands its buffer (with its
+//                                division) and engine hold;
+//   rtl/fixed_ratio.sv           a_tick (a feed tick only while a command
+//                                runs) and a_progress (at full feed the
+//                                engine stalls only for an axis not ready);
+//   rtl/stepdir_axis.sv          a_fire_ready (the engine fires only a ready
+//                                axis) and a_dir_next (READY_Q = 1: the
+//                                direction it announced a clock ahead), per axis.
+// ACC_W = 2, FRAC_W = 3: deltas -2..1, a division of 5 clocks; TIM_W = 2:
+// settings 0..3, pulses up to 3 clocks.
+module fixed_ratio_props #(
+  parameter int AXES    = 2,
+  parameter int ACC_W   = 2,
+  parameter int FRAC_W  = 3,
+  parameter int POS_W   = 2,
+  parameter int TIM_W   = 2,
+  parameter int FEED_W  = 2
+) (
+  input logic                    clk_i,
+  input logic                    rst_ni,
+  input logic                    cmd_valid_i,
+  input logic [AXES*ACC_W-1:0]   cmd_delta_i,
+  input logic [FEED_W:0]         feed_i,
+  input logic [TIM_W-1:0]        step_len_i,
+  input logic [TIM_W-1:0]        step_space_i,
+  input logic [TIM_W-1:0]        dir_setup_i,
+  input logic [TIM_W-1:0]        dir_hold_i,
+  input logic                    abort_i
+);
+  logic                  cmd_ready, busy, done;
+  logic [AXES-1:0]       step, dir;
+  logic [AXES*POS_W-1:0] pos;
+
+  fixed_ratio #(
+    .AXES   (AXES),
+    .ACC_W  (ACC_W),
+    .FRAC_W (FRAC_W),
+    .POS_W  (POS_W),
+    .TIM_W  (TIM_W),
+    .FEED_W (FEED_W)
+  ) dut (
+    .clk_i,
+    .rst_ni,
+    .cmd_valid_i,
+    .cmd_ready_o(cmd_ready),
+    .cmd_delta_i,
+    .feed_i,
+    .step_len_i,
+    .step_space_i,
+    .dir_setup_i,
+    .dir_hold_i,
+    .abort_i,
+    .step_o     (step),
+    .dir_o      (dir),
+    .pos_o      (pos),
+    .busy_o     (busy),
+    .done_o     (done)
+  );
+
+  // Reset in the first cycle only.
+  logic f_init = 1'b1;
+  always_ff @(posedge clk_i) f_init <= 1'b0;
+  always_comb assume(rst_ni == !f_init);
+endmodule
