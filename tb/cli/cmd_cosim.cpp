@@ -112,11 +112,12 @@ int run_cosim(int argc, char** argv, int first) {
   trace_from_args(args, options);
   if (args.given("dump-frames")) options.frames_path = args.str("dump-frames");
   if (args.given("path-csv")) options.path_csv = args.str("path-csv");
+  if (args.given("step-times")) options.step_times_path = args.str("step-times");
   if (args.given("abort-at"))
     options.abort_at = static_cast<uint64_t>(args.integer("abort-at", 1, INT64_MAX));
 
   // Every output can be written, or nothing runs.
-  check_outputs_writable(args, {"vcd", "fst", "path-csv", "dump-frames"});
+  check_outputs_writable(args, {"vcd", "fst", "path-csv", "step-times", "dump-frames"});
   // Validates the stimulus and opens every output file before the run.
   const std::unique_ptr<tb::BenchRun> run = variant.from_args(args, options);
   std::cout << "hwinterp cosim: " << core->name << " (" << variant.spec.variant << "), mode "

@@ -7,6 +7,8 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "tb/base/text_table.h"
 #include "tb/cli/subcommand.h"
@@ -17,6 +19,20 @@
 namespace hwinterp::cli {
 
 namespace {
+
+// Runs a plot script with the project's Python; on success removes its data
+// files and names the PNG, else says the command that failed.
+bool plot(const std::string& script, const std::string& arguments, const std::string& png,
+          const std::vector<std::string>& data) {
+  const std::string cmd = "'" HWINTERP_PYTHON "' '" + script + "' " + arguments + " > /dev/null";
+  if (std::system(cmd.c_str()) != 0) {
+    std::cout << "plot: failed (" << cmd << ")\n";
+    return false;
+  }
+  std::cout << "plot: " << png << "\n";
+  for (const std::string& f : data) std::remove(f.c_str());
+  return true;
+}
 
 int run_gcode(int argc, char** argv, int first) {
   Args args(
@@ -39,7 +55,13 @@ int run_gcode(int argc, char** argv, int first) {
               "computed from the feed words); programmed: simulate the programmed feeds",
               "full")
       .option("moves-csv", "FILE", "one row per motion move: programmed end, lattice end reached")
+      .option("step-times", "FILE",
+              "every step pulse on the wire as CSV: clock,axis,dir (the clock of its rising "
+              "edge, the axis letter, +1 or -1)")
       .option("plot", "FILE.png", "the path, coloured by contour error (matplotlib)")
+      .option("plot-kinematics", "FILE.png",
+              "speed, acceleration and jerk over time for the path and each axis, with the "
+              "machine's limits (matplotlib)")
       .option("vcd", "FILE", "VCD trace of the run")
       .option("fst", "FILE", "FST trace of the run")
       .option("trace-window", "N", "keep only the last N clocks in the trace")
@@ -67,13 +89,19 @@ int run_gcode(int argc, char** argv, int first) {
   // Every output can be written, or nothing runs.
   trace_from_args(args, setup.bench);
   setup.bench.progress_every = static_cast<uint64_t>(args.integer("progress", 0, INT64_MAX));
-  check_outputs_writable(args, {"moves-csv", "plot", "vcd", "fst"});
+  check_outputs_writable(args,
+                         {"moves-csv", "step-times", "plot", "plot-kinematics", "vcd", "fst"});
+  if (args.given("step-times")) setup.bench.step_times_path = args.str("step-times");
   std::unique_ptr<std::ofstream> moves_csv, points_csv;
   if (args.given("moves-csv")) moves_csv = std::make_unique<std::ofstream>(args.str("moves-csv"));
   const std::string points_path = args.given("plot") ? args.str("plot") + ".points.csv" : "";
   if (!points_path.empty()) points_csv = std::make_unique<std::ofstream>(points_path);
   setup.moves_csv = moves_csv.get();
   setup.points_csv = points_csv.get();
+  std::unique_ptr<std::ofstream> kinematics_csv;
+  const std::string kin_png = args.given("plot-kinematics") ? args.str("plot-kinematics") : "";
+  if (!kin_png.empty()) kinematics_csv = std::make_unique<std::ofstream>(kin_png + ".csv");
+  setup.kinematics_csv = kinematics_csv.get();
 
   const gcode::PartProgramRun run = gcode::run_part_program(setup);
   bool ok = run.passed;
@@ -92,16 +120,21 @@ int run_gcode(int argc, char** argv, int first) {
   if (points_csv) {
     points_csv->close();
     if (!*points_csv) throw UsageError("--plot: error writing '" + points_path + "'");
-    const std::string cmd = "'" HWINTERP_PYTHON "' '" HWINTERP_SCRIPTS_DIR "/plot_gcode.py' '" +
-                            points_path + "' -o '" + args.str("plot") + "' --title '" +
-                            setup.program + "' > /dev/null";
-    if (std::system(cmd.c_str()) != 0) {
-      std::cout << "plot: failed (" << cmd << ")\n";
-      ok = false;
-    } else {
-      std::cout << "plot: " << args.str("plot") << "\n";
-      std::remove(points_path.c_str());
-    }
+    ok = plot(HWINTERP_SCRIPTS_DIR "/plot_gcode.py",
+              "'" + points_path + "' -o '" + args.str("plot") + "' --title '" + setup.program + "'",
+              args.str("plot"), {points_path}) &&
+         ok;
+  }
+  if (kinematics_csv) {
+    kinematics_csv->close();
+    if (!*kinematics_csv)
+      throw UsageError("--plot-kinematics: error writing '" + kin_png + ".csv'");
+    std::ofstream(kin_png + ".json") << gcode::kinematics_units_json(setup, run).dump(1) << "\n";
+    ok = plot(HWINTERP_SCRIPTS_DIR "/plot_kinematics.py",
+              "'" + kin_png + ".csv' '" + kin_png + ".json' -o '" + kin_png + "' --title '" +
+                  setup.program + "'",
+              kin_png, {kin_png + ".csv", kin_png + ".json"}) &&
+         ok;
   }
   std::cout << (ok ? "PASS" : "FAIL") << "\n";
   report["passed"] = ok;

@@ -61,6 +61,21 @@ class Reader {
     return static_cast<int>(names.find(letter[0]));
   }
 
+  // An object {"X": value, ...} over axes the machine has: read(key.X, value, axis).
+  template <class Read>
+  void per_axis(const std::string& key, const json& value, const Machine& m, const char* what,
+                Read read) const {
+    if (!value.is_object())
+      fail(key, value, std::string("not an object {\"X\": ") + what + ", ...}");
+    for (const auto& [letter, v] : value.items()) {
+      const std::string k = key + "." + letter;
+      const int i = axis(k, letter, v);
+      if (!m.has_axis[i])
+        fail(k, v, "the machine has no " + letter + " axis (axes " + m.axes() + ")");
+      read(k, v, i);
+    }
+  }
+
  private:
   std::string name_;
 };
@@ -127,14 +142,9 @@ Machine read_machine(std::istream& in, const std::string& name) {
     } else if (key == "axes") {
       // read above
     } else if (key == "steps_per_unit") {
-      if (!value.is_object()) r.fail(key, value, "not an object {\"X\": steps, ...}");
-      for (const auto& [axis, steps] : value.items()) {
-        const std::string k = "steps_per_unit." + axis;
-        const int i = r.axis(k, axis, steps);
-        if (!m.has_axis[i])
-          r.fail(k, steps, "the machine has no " + axis + " axis (axes " + m.axes() + ")");
-        m.steps_per_unit[i] = r.integer(k, steps, 1, 10'000'000);
-      }
+      r.per_axis(key, value, m, "steps", [&](const std::string& k, const json& v, int i) {
+        m.steps_per_unit[i] = r.integer(k, v, 1, 10'000'000);
+      });
     } else if (key == "clock_hz") {
       m.clock_hz = r.integer(key, value, 1, 10'000'000'000);
     } else if (key == "rapid_mm_per_min") {
@@ -152,10 +162,24 @@ Machine read_machine(std::istream& in, const std::string& name) {
           r.fail(k, clocks, "unknown key (step_len, step_space, dir_setup, dir_hold)");
         *slot = r.integer(k, clocks, 1, 65535);
       }
+    } else if (key == "travel") {
+      r.per_axis(key, value, m, "[min, max]", [&](const std::string& k, const json& v, int i) {
+        if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number())
+          r.fail(k, v, "not [min, max] (two numbers)");
+        const double lo = v[0].get<double>(), hi = v[1].get<double>();
+        if (!(lo < hi) || !std::isfinite(lo) || !std::isfinite(hi)) r.fail(k, v, "not min < max");
+        m.travel[i] = {lo, hi};
+      });
+    } else if (key == "max_velocity" || key == "max_accel" || key == "max_jerk") {
+      r.per_axis(key, value, m, "a limit", [&](const std::string& k, const json& v, int i) {
+        AxisLimits& l = m.limits[i];
+        double& slot = key == "max_velocity" ? l.velocity : key == "max_accel" ? l.accel : l.jerk;
+        slot = r.positive(k, v, 1e12);
+      });
     } else {
       r.fail(key, value,
              "unknown key (comment, axes, steps_per_unit, clock_hz, rapid_mm_per_min, "
-             "timing_clocks)");
+             "timing_clocks, travel, max_velocity, max_accel, max_jerk)");
     }
   }
   return m;

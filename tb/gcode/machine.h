@@ -14,10 +14,22 @@
 //                                                 //   for axes the machine has
 //     "clock_hz": 50000000,                       // integer in [1, 10^10]
 //     "rapid_mm_per_min": 5000,                   // number in (0, 10^7]
-//     "timing_clocks": {"step_len": 2, "step_space": 2, "dir_setup": 3, "dir_hold": 3}
+//     "timing_clocks": {"step_len": 2, "step_space": 2, "dir_setup": 3, "dir_hold": 3},
 //                                                 // the hostmot2 step/dir timing, in
 //                                                 //   clocks, integers in [1, 65535]
+//     "travel": {"X": [-10, 300], "Z": [-80, 0]}, // [min, max] of an axis's programmed
+//                                                 //   coordinate, mm (deg on A B C),
+//                                                 //   min < max; unlisted: unlimited
+//     "max_velocity": {"X": 100},                 // per axis, mm/s (deg/s), > 0
+//     "max_accel": {"X": 2000},                   //   mm/s^2 (deg/s^2), > 0
+//     "max_jerk": {"X": 100000}                   //   mm/s^3 (deg/s^3), > 0; unlisted:
+//                                                 //   unlimited
 //   }
+//
+// The travel is checked before anything runs (tb/gcode/limits.h): a program
+// whose path leaves it exits 2 naming the line and the axis. The kinematic
+// limits are what the run's kinematics report sets each axis's highest
+// speed, acceleration and jerk beside.
 //
 // Defaults (the project's, cmake/cores.cmake): axes X Y Z A, 1000 steps/mm
 // on X Y Z, 100 steps/deg on A (and on B and C when listed), 50 MHz,
@@ -28,8 +40,10 @@
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <istream>
+#include <limits>
 #include <string>
 
 #include "tb/gcode/move.h"
@@ -43,12 +57,29 @@ struct StepTiming {  // in clocks
   int64_t dir_hold = 3;
 };
 
+// A closed range of an axis's coordinate; unlimited by default.
+struct Travel {
+  double min = -std::numeric_limits<double>::infinity();
+  double max = std::numeric_limits<double>::infinity();
+  bool limited() const { return std::isfinite(min) || std::isfinite(max); }
+};
+
+// Per axis, in units of the axis (mm or deg) per s, s^2, s^3; infinity: no
+// limit.
+struct AxisLimits {
+  double velocity = std::numeric_limits<double>::infinity();
+  double accel = std::numeric_limits<double>::infinity();
+  double jerk = std::numeric_limits<double>::infinity();
+};
+
 struct Machine {
   std::array<bool, kAxes> has_axis{true, true, true, true, false, false};  // X Y Z A B C
   std::array<int64_t, kAxes> steps_per_unit{1000, 1000, 1000, 100, 100, 100};
   int64_t clock_hz = 50'000'000;
   double rapid_mm_per_min = 5000;
   StepTiming timing;
+  std::array<Travel, kAxes> travel{};
+  std::array<AxisLimits, kAxes> limits{};
 
   std::string axes() const;  // "XYZA"
 };

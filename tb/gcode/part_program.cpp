@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <deque>
@@ -14,7 +15,9 @@
 #include "tb/base/text_table.h"
 #include "tb/cores/motion_top/motion_top_adapter.h"
 #include "tb/gcode/contour.h"
+#include "tb/gcode/limits.h"
 #include "tb/lockstep/bench_run.h"
+#include "tb/monitor/kinematics.h"
 #include "tb/report/cosim_report.h"
 
 namespace hwinterp::gcode {
@@ -24,6 +27,20 @@ namespace {
 using MotionAdapter = tb::cores::motion_top::Adapter;
 
 constexpr const char* kAxisName[] = {"x", "y", "z", "a", "b", "c"};
+
+// Units per step of each axis on the path: mm on X Y Z, 0 on the rotary axes
+// (the feed, as LinuxCNC's, applies to XYZ).
+std::vector<double> path_units(const Machine& m, int axes) {
+  std::vector<double> u(static_cast<size_t>(axes), 0.0);
+  for (int i = 0; i < axes && i < kA; ++i)
+    u[static_cast<size_t>(i)] = 1.0 / static_cast<double>(m.steps_per_unit[i]);
+  return u;
+}
+
+uint64_t kinematics_window(const Machine& m, double seconds) {
+  return std::max<uint64_t>(
+      1, static_cast<uint64_t>(std::llround(seconds * static_cast<double>(m.clock_hz))));
+}
 
 // One command on its way to the core, and the move it belongs to.
 struct Pending {
@@ -39,7 +56,8 @@ struct Pending {
 class Program final : public tb::ItemSource<MotionAdapter>, public tb::MoveObserver {
  public:
   Program(std::unique_ptr<MoveSource> source, const Machine& machine, const MotionWidths& widths,
-          FeedMode mode, const std::string& name, std::ostream* moves_csv, std::ostream* points_csv)
+          FeedMode mode, const std::string& name, std::ostream* moves_csv, std::ostream* points_csv,
+          std::ostream* kinematics_csv, double kinematics_window_s)
       : source_(std::move(source)),
         machine_(machine),
         compiler_(*source_, machine, widths, mode, name,
@@ -47,13 +65,18 @@ class Program final : public tb::ItemSource<MotionAdapter>, public tb::MoveObser
         axes_(widths.axes),
         moves_csv_(moves_csv),
         points_csv_(points_csv),
-        last_reached_(static_cast<size_t>(widths.axes), 0) {
+        last_reached_(static_cast<size_t>(widths.axes), 0),
+        kinematics_(widths.axes, path_units(machine, widths.axes),
+                    kinematics_window(machine, kinematics_window_s)) {
     if (moves_csv_) {
       *moves_csv_ << "move,line,kind,x_mm,y_mm,z_mm,a_deg";
       for (int i = 0; i < axes_; ++i) *moves_csv_ << ',' << kAxisName[i] << "_steps";
       *moves_csv_ << ",commands,chords,programmed_s,feed_words_s,max_contour_mm\n";
     }
     if (points_csv_) *points_csv_ << "move,x_mm,y_mm,z_mm,error_mm\n";
+    std::vector<std::string> letters;
+    for (int i = 0; i < axes_; ++i) letters.emplace_back(1, kAxisNames[i]);
+    kinematics_.write_series(kinematics_csv, letters);
   }
 
   // tb::ItemSource: the next command of the program.
@@ -98,6 +121,11 @@ class Program final : public tb::ItemSource<MotionAdapter>, public tb::MoveObser
     ++points_;
   }
 
+  // tb::MoveObserver: the pulses on the wire.
+  void pulses(uint64_t clock, uint32_t rising, uint32_t dir) override {
+    kinematics_.pulses(clock, rising, dir);
+  }
+
   // tb::MoveObserver: command `command` completed at `at`.
   void done(uint64_t command, const models::LatticePoint& at) override {
     while (!pending_.empty() && pending_.front().command < command) pending_.pop_front();
@@ -113,6 +141,7 @@ class Program final : public tb::ItemSource<MotionAdapter>, public tb::MoveObser
   const ReaderStats& reader_stats() const { return source_->stats(); }
   const ContourMax& max() const { return max_; }
   uint64_t points() const { return points_; }
+  tb::KinematicsMonitor& kinematics() { return kinematics_; }
 
   // The rows of every reported move whose last command the core completed.
   void flush_rows() {
@@ -178,6 +207,7 @@ class Program final : public tb::ItemSource<MotionAdapter>, public tb::MoveObser
   uint64_t commands_ = 0, points_ = 0;
   ContourMax max_;
   std::vector<uint64_t> end_mismatches_;
+  tb::KinematicsMonitor kinematics_;
 };
 
 // This process's peak resident memory in KiB (VmHWM: since exec, so not the
@@ -217,6 +247,52 @@ Chosen choose(const PartProgramSetup& setup) {
   return c;
 }
 
+std::unique_ptr<MoveSource> open_source(const PartProgramSetup& setup) {
+  return setup.canon ? open_canon(setup.program) : open_ngc(setup.program);
+}
+
+// The monitor's peaks in units per s^k, beside the machine's limits.
+Kinematics kinematics_of(const tb::KinematicsMonitor& k, const Machine& m) {
+  const double hz = static_cast<double>(m.clock_hz);
+  const double w = static_cast<double>(k.window_clocks());
+  const tb::KinematicsMonitor::Peaks tol = k.tolerance();
+  // units per clock^k -> per s^k
+  auto peak = [&](const tb::KinematicsMonitor::Peak& p, double tol_steps, double unit, int order,
+                  double limit) {
+    const double scale = std::pow(hz, order);
+    return KinematicPeak{p.value * unit * scale, static_cast<double>(p.clock + 1) / hz,
+                         tol_steps * unit * scale, limit};
+  };
+  Kinematics out;
+  out.window_s = w / hz;
+  out.windows = k.windows();
+  double path_unit = 0;  // the tolerance's per-axis errors, added as a vector
+  for (int i = 0; i < kA && i < static_cast<int>(m.has_axis.size()); ++i)
+    if (m.has_axis[i]) path_unit += std::pow(1.0 / static_cast<double>(m.steps_per_unit[i]), 2);
+  path_unit = std::sqrt(path_unit);
+  const tb::KinematicsMonitor::Peaks& p = k.path();
+  const double none = std::numeric_limits<double>::infinity();
+  out.rows.push_back({"path", "mm", peak(p.speed, tol.speed.value, 1, 1, none),
+                      peak(p.accel, tol.accel.value, 1, 2, none),
+                      peak(p.jerk, tol.jerk.value, 1, 3, none)});
+  // The path's peaks are in mm per clock^k already: their tolerance scales
+  // by the per-axis steps' length in mm.
+  out.rows.back().speed.tolerance *= path_unit;
+  out.rows.back().accel.tolerance *= path_unit;
+  out.rows.back().jerk.tolerance *= path_unit;
+  for (int i = 0; i < kAxes; ++i) {
+    if (!m.has_axis[i]) continue;
+    const double unit = 1.0 / static_cast<double>(m.steps_per_unit[i]);
+    const tb::KinematicsMonitor::Peaks& a = k.axis(i);
+    const AxisLimits& l = m.limits[static_cast<size_t>(i)];
+    out.rows.push_back({std::string(1, kAxisNames[i]), i < kA ? "mm" : "deg",
+                        peak(a.speed, tol.speed.value, unit, 1, l.velocity),
+                        peak(a.accel, tol.accel.value, unit, 2, l.accel),
+                        peak(a.jerk, tol.jerk.value, unit, 3, l.jerk)});
+  }
+  return out;
+}
+
 }  // namespace
 
 tb::VariantSpec part_program_variant(const PartProgramSetup& setup) {
@@ -233,9 +309,15 @@ PartProgramRun run_part_program(const PartProgramSetup& setup) {
   widths.ops_w = l.param("OPS_W");
   widths.feed_w = l.feed_w;
 
-  auto source = setup.canon ? open_canon(setup.program) : open_ngc(setup.program);
+  // The program's reach first: travel and position counters (tb/gcode/limits.h).
+  {
+    auto source = open_source(setup);
+    check_reach(*source, setup.machine, l.param("POS_W"), l.variant, setup.program);
+  }
+  auto source = open_source(setup);
   auto prog = std::make_shared<Program>(std::move(source), setup.machine, widths, setup.feed_mode,
-                                        setup.program, setup.moves_csv, setup.points_csv);
+                                        setup.program, setup.moves_csv, setup.points_csv,
+                                        setup.kinematics_csv, setup.kinematics_window_s);
 
   // One case from the origin, the machine's step/dir timing, feed_i running.
   tb::Case<MotionAdapter> c;
@@ -265,6 +347,7 @@ PartProgramRun run_part_program(const PartProgramSetup& setup) {
     tb::run_systemc({run.get()});
   run->close();
   prog->flush_rows();
+  prog->kinematics().finish(run->cycles());
 
   PartProgramRun r;
   r.variant = l;
@@ -274,6 +357,7 @@ PartProgramRun run_part_program(const PartProgramSetup& setup) {
   r.contour = prog->max();
   r.visited_points = prog->points();
   r.end_mismatches = prog->end_mismatches();
+  r.kinematics = kinematics_of(prog->kinematics(), setup.machine);
   r.all_rows_written = prog->all_rows_written();
   r.passed = tb::all_passed(r.results) && !r.results.empty() && r.results.front().completed &&
              r.end_mismatches.empty() && r.all_rows_written;
@@ -311,6 +395,17 @@ std::string summary_table(const PartProgramSetup& setup, const PartProgramRun& r
                                       " steps (move " + std::to_string(m.move) + ", line " +
                                       std::to_string(m.line) + ")"});
   s.add_row({"visited lattice points", std::to_string(run.visited_points)});
+  const Kinematics& k = run.kinematics;
+  for (const KinematicRow& row : k.rows) {
+    auto cell = [&](const KinematicPeak& p, const char* per) {
+      std::string c = fmt("%.4g", p.max) + " " + row.unit + per;
+      if (std::isfinite(p.limit)) c += " (limit " + fmt("%.4g", p.limit) + ")";
+      return c;
+    };
+    s.add_row(
+        {"peak speed, accel, jerk: " + row.name + " (" + fmt("%g", k.window_s * 1e3) + " ms)",
+         cell(row.speed, "/s") + ", " + cell(row.accel, "/s^2") + ", " + cell(row.jerk, "/s^3")});
+  }
   return s.render();
 }
 
@@ -347,7 +442,51 @@ Json report_json(const PartProgramSetup& setup, const PartProgramRun& run) {
   report["visited_points"] = run.visited_points;
   report["end_mismatches"] = run.end_mismatches.size();
   report["peak_rss_kib"] = peak_rss_kib();
+  Json kin;
+  kin["estimator"] =
+      "window means of the step counts and their first and second differences "
+      "(tb/monitor/kinematics.h)";
+  kin["window_s"] = run.kinematics.window_s;
+  kin["windows"] = run.kinematics.windows;
+  for (const KinematicRow& row : run.kinematics.rows) {
+    Json j;
+    j["unit"] = row.unit;
+    auto put = [&](const char* name, const KinematicPeak& p) {
+      j[name] = {{"max", p.max},
+                 {"at_s", p.at_s},
+                 {"tolerance", p.tolerance},
+                 {"limit", std::isfinite(p.limit) ? Json(p.limit) : Json(nullptr)}};
+    };
+    put("speed", row.speed);
+    put("accel", row.accel);
+    put("jerk", row.jerk);
+    if (row.name == "path")
+      kin["path"] = j;
+    else
+      kin["axes"][row.name] = j;
+  }
+  report["kinematics"] = kin;
   return report;
+}
+
+Json kinematics_units_json(const PartProgramSetup& setup, const PartProgramRun& run) {
+  Json j;
+  j["clock_hz"] = setup.machine.clock_hz;
+  j["window_s"] = run.kinematics.window_s;
+  j["axes"] = Json::object();
+  for (const KinematicRow& row : run.kinematics.rows) {
+    if (row.name == "path") continue;
+    const int i = static_cast<int>(std::string(kAxisNames).find(row.name[0]));
+    Json a;
+    a["unit_per_step"] = 1.0 / static_cast<double>(setup.machine.steps_per_unit[i]);
+    a["unit"] = row.unit;
+    a["limits"] = Json::object();
+    if (std::isfinite(row.speed.limit)) a["limits"]["speed"] = row.speed.limit;
+    if (std::isfinite(row.accel.limit)) a["limits"]["accel"] = row.accel.limit;
+    if (std::isfinite(row.jerk.limit)) a["limits"]["jerk"] = row.jerk.limit;
+    j["axes"][row.name] = a;
+  }
+  return j;
 }
 
 }  // namespace hwinterp::gcode

@@ -17,6 +17,7 @@
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -42,6 +43,28 @@ struct PartProgramSetup {
   tb::BenchOptions bench;              // traces, progress (mode and observer are set by the run)
   std::ostream* moves_csv = nullptr;   // one row per motion move; null: none
   std::ostream* points_csv = nullptr;  // one row per visited point (the plot's); null: none
+  std::ostream* kinematics_csv = nullptr;  // one row per estimator window; null: none
+  double kinematics_window_s = 0.01;  // the kinematics estimator's window (tb/monitor/kinematics.h)
+};
+
+// One quantity's highest magnitude seen on the wire, beside its limit, in
+// units (mm or deg) per s^k.
+struct KinematicPeak {
+  double max = 0;        // the estimator's highest value
+  double at_s = 0;       // the end of the window it was seen in, s from the run's start
+  double tolerance = 0;  // the estimator's tolerance (tb/monitor/kinematics.h), same units
+  double limit = std::numeric_limits<double>::infinity();  // the machine's; infinity: none
+};
+struct KinematicRow {
+  std::string name;  // "path" or the axis letter
+  std::string unit;  // "mm" or "deg"
+  KinematicPeak speed, accel, jerk;
+};
+// What the step stream asked of the machine: the path (X Y Z) and each axis.
+struct Kinematics {
+  double window_s = 0;
+  uint64_t windows = 0;
+  std::vector<KinematicRow> rows;  // the path first, then the axes in order
 };
 
 // The worst contour error, and where.
@@ -59,16 +82,18 @@ struct PartProgramRun {
   ContourMax contour;
   uint64_t visited_points = 0;
   std::vector<uint64_t> end_mismatches;  // moves that ended off their rounded programmed end
-  bool all_rows_written = false;         // every move reached the moves CSV
-  bool passed = false;                   // lockstep, model, timing, end points: everything held
+  Kinematics kinematics;
+  bool all_rows_written = false;  // every move reached the moves CSV
+  bool passed = false;            // lockstep, model, timing, end points: everything held
 };
 
 // The variant it will run on (named, or the first with the machine's axes);
 // throws cli::UsageError listing the variants.
 tb::VariantSpec part_program_variant(const PartProgramSetup& setup);
 
-// Compiles and runs the program; bad input (the program, the variant)
-// throws cli::UsageError before anything is simulated.
+// Compiles and runs the program; bad input (the program, the variant, a
+// path that leaves the machine's travel or the core's position counters:
+// tb/gcode/limits.h) throws cli::UsageError before anything is simulated.
 PartProgramRun run_part_program(const PartProgramSetup& setup);
 
 // The run's summary table (moves, commands, steps, times, contour error) and
@@ -76,5 +101,8 @@ PartProgramRun run_part_program(const PartProgramSetup& setup);
 // command's own keys).
 std::string summary_table(const PartProgramSetup& setup, const PartProgramRun& run);
 Json report_json(const PartProgramSetup& setup, const PartProgramRun& run);
+// What scripts/plot_kinematics.py needs beside the series: clock_hz, the
+// window, and per axis its units per step, unit name and limits.
+Json kinematics_units_json(const PartProgramSetup& setup, const PartProgramRun& run);
 
 }  // namespace hwinterp::gcode

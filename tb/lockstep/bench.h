@@ -30,6 +30,7 @@
 #include "tb/lockstep/payload_pins.h"
 #include "tb/monitor/stepdir_monitor.h"
 #include "tb/report/frames.h"
+#include "tb/report/step_times.h"
 #include "tb/report/trace.h"
 #include "tb/scoreboard/scoreboard.h"
 #include "tb/stimulus/stimulus.h"
@@ -90,6 +91,8 @@ class Bench {
       if (!options_.frames_path.empty())
         frames_ = std::make_unique<FrameWriter>(options_.frames_path, spec_, ports);
     }
+    if (!options_.step_times_path.empty())
+      step_times_ = std::make_unique<StepTimesCsv>(options_.step_times_path, spec_.axes);
     if (!options_.path_csv.empty()) {
       path_csv_ = std::make_unique<std::ofstream>(options_.path_csv);
       if (!*path_csv_)
@@ -167,10 +170,13 @@ class Bench {
       const uint64_t done_before = scoreboard_->done_count();
       const bool moved = scoreboard_->observe(cycle_, seen, r);
       if (moved) {
+        if (step_times_) step_times_->write(cycle_, scoreboard_->rising(), seen.dir);
         if (path_csv_) path_row("move", scoreboard_->position(), scoreboard_->last_error());
         if (options_.record_path) r.visited.push_back(scoreboard_->position());
-        if (options_.observer)
+        if (options_.observer) {
+          options_.observer->pulses(cycle_, scoreboard_->rising(), seen.dir);
           options_.observer->move(scoreboard_->position(), scoreboard_->current_command());
+        }
       }
       if (options_.observer && scoreboard_->done_count() > done_before)
         options_.observer->done(done_before, scoreboard_->position());
@@ -215,6 +221,7 @@ class Bench {
   void close() {
     if (trace_) trace_->close();
     if (frames_) frames_->close();
+    if (step_times_) step_times_->close();
     if (path_csv_) {
       path_csv_->close();
       if (!*path_csv_)
@@ -480,6 +487,7 @@ class Bench {
   std::unique_ptr<Trace> trace_;
   std::unique_ptr<FrameWriter> frames_;
   std::unique_ptr<std::ofstream> path_csv_;
+  std::unique_ptr<StepTimesCsv> step_times_;
   models::LatticePoint path_target_;  // where the commands taken so far lead
   uint64_t in_values_[Trace::kMaxInputs] = {};
 

@@ -29,6 +29,11 @@ class MoveObserver {
   virtual void move(const models::LatticePoint& at, uint64_t command) = 0;
   // Command `command` completed (done_o) with the axes at `at`.
   virtual void done(uint64_t command, const models::LatticePoint& at) = 0;
+  // The step pulses that rose on clock edge `clock` of the run (bit i: axis
+  // i; dir bit i set: the pulse moved axis i by -1), on the clocks of move().
+  virtual void pulses(uint64_t clock, uint32_t rising, uint32_t dir) {
+    (void)clock, (void)rising, (void)dir;
+  }
 };
 
 struct BenchOptions {
@@ -45,6 +50,9 @@ struct BenchOptions {
   // (case start), `target` (end point of a command taken), `move` (position
   // after the core stepped); scripts/plot_paths.py draws it. Empty: none.
   std::string path_csv;
+  // Every step pulse on the wire as CSV (clock,axis,dir: tb/report/step_times.h);
+  // empty: none.
+  std::string step_times_path;
   // Keep every visited lattice point in CaseResult::visited and the cycle of
   // every done_o pulse in CaseResult::done_cycles.
   bool record_path = false;

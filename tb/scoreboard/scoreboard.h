@@ -85,6 +85,7 @@ class Scoreboard {
   bool observe(uint64_t cycle, const OutPins& pins, CaseResult& r) {
     const uint32_t rising = pins.step & ~prev_step_;
     prev_step_ = pins.step;
+    rising_ = rising;
     if (rising || pins.done) observe_event(cycle, pins, rising, r);
     uint64_t pos_diff = 0;
     for (int i = 0; i < axes_; ++i)
@@ -117,6 +118,8 @@ class Scoreboard {
       error(r, "ended at " + point_text(at_) + ", expected " + point_text(expected_end_));
   }
 
+  // The axes whose step pulse rose on the last observed clock (bit i: axis i).
+  uint32_t rising() const { return rising_; }
   // Where the step/dir outputs have taken the axes so far, and where the
   // commands taken so far lead (for a report cut short by a mismatch).
   const models::LatticePoint& position() const { return at_; }
@@ -289,6 +292,7 @@ class Scoreboard {
   std::optional<Reference> stream_;  // moves of taken_[current_]
   uint64_t done_count_ = 0;
   uint32_t prev_step_ = 0;
+  uint32_t rising_ = 0;
   double last_error_ = 0;
   std::vector<std::string> failures_;  // of the reference's own checks, reported at once
   bool diverged_ = false;      // after a wrong move the rest of the sequence is not compared

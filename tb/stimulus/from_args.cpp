@@ -33,6 +33,9 @@ void declare_cosim_options(cli::Args& args) {
       .option("path-csv", "FILE",
               "write the lattice path (start, command targets, every move) as CSV for "
               "scripts/plot_paths.py")
+      .option("step-times", "FILE",
+              "write every step pulse on the wire as CSV: clock,axis,dir (the clock of its "
+              "rising edge, the axis letter, +1 or -1)")
       .option("dump-frames", "FILE",
               "write the input frames, one hex line a clock, and FILE.sv, a Verilog "
               "testbench that replays them into the RTL")

@@ -2,6 +2,7 @@
 // every kind of bad value named with its key.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <sstream>
 
 #include "gcode_test_util.h"
@@ -67,6 +68,25 @@ TEST(Machine, KeysOverrideTheirDefaultsOnly) {
   EXPECT_EQ(m.timing.step_len, 2);
 }
 
+TEST(Machine, TravelAndLimitsArePerAxisAndUnlimitedWhenUnlisted) {
+  const Machine m = from(
+      R"({"travel": {"X": [-10, 300.5], "A": [-360, 360]},
+          "max_velocity": {"X": 100}, "max_accel": {"X": 2000, "Z": 500},
+          "max_jerk": {"Y": 1e5}})");
+  EXPECT_EQ(m.travel[kX].min, -10);
+  EXPECT_EQ(m.travel[kX].max, 300.5);
+  EXPECT_EQ(m.travel[kA].max, 360);
+  EXPECT_TRUE(m.travel[kX].limited());
+  EXPECT_FALSE(m.travel[kY].limited());
+  EXPECT_EQ(m.limits[kX].velocity, 100);
+  EXPECT_EQ(m.limits[kX].accel, 2000);
+  EXPECT_EQ(m.limits[kZ].accel, 500);
+  EXPECT_EQ(m.limits[kY].jerk, 1e5);
+  EXPECT_TRUE(std::isinf(m.limits[kY].velocity));
+  EXPECT_TRUE(std::isinf(m.limits[kX].jerk));
+  EXPECT_FALSE(Machine{}.travel[kZ].limited());
+}
+
 TEST(Machine, BadValuesNameTheirKey) {
   struct Case {
     const char* json;
@@ -100,6 +120,15 @@ TEST(Machine, BadValuesNameTheirKey) {
       {R"({"timing_clocks": {"step_ns": 20}})", {"timing_clocks.step_ns", "unknown key"}},
       {R"({"timing_clocks": {"dir_hold": 65536}})", {"timing_clocks.dir_hold", "outside"}},
       {R"({"comment": 3})", {"comment", "not a string"}},
+      {R"({"travel": {"X": [5, 5]}})", {"travel.X", "[5,5]", "not min < max"}},
+      {R"({"travel": {"X": [5]}})", {"travel.X", "not [min, max]"}},
+      {R"({"travel": {"X": ["a", 1]}})", {"travel.X", "not [min, max]"}},
+      {R"({"travel": {"B": [0, 1]}})", {"travel.B", "no B axis"}},
+      {R"({"travel": [0, 1]})", {"travel", "not an object"}},
+      {R"({"max_velocity": {"X": 0}})", {"max_velocity.X", "outside"}},
+      {R"({"max_accel": {"Y": -1}})", {"max_accel.Y", "-1", "outside"}},
+      {R"({"max_jerk": {"Z": "x"}})", {"max_jerk.Z", "not a number"}},
+      {R"({"max_jerk": {"Q": 1}})", {"max_jerk.Q", "not an axis"}},
       {R"({"clock_hz": 1, "clock_hz": 2})", {"'clock_hz' given twice"}},
       {R"({"timing_clocks": {"step_len": 1, "step_len": 2}})", {"'step_len' given twice"}},
       {R"([1, 2])", {"not a JSON object"}},

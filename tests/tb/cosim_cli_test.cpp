@@ -161,6 +161,44 @@ TEST(CosimCli, PathCsvHasStartTargetAndEveryMove) {
   EXPECT_NE(last.find(",move,40,20,0,"), std::string::npos) << last;  // on the line: 0
 }
 
+// --step-times: a row per pulse on the wire, in clock order, with its axis
+// and direction; the step/dir timing settings space the pulses of an axis.
+TEST(CosimCli, StepTimesHaveEveryPulseWithItsAxisAndDirection) {
+  const std::string csv = scratch_dir("cosim_step_times") + "/t.csv";
+  const CliResult r = run_hwinterp(
+      "cosim --core dda_line --line 10,10,-20,17 --mode direct --step-len 3 --step-space 4 "
+      "--step-times " +
+      csv);
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  std::ifstream f(csv);
+  std::string line;
+  std::getline(f, line);
+  EXPECT_EQ(line, "clock,axis,dir");
+  int x = 0, y = 0, rows = 0;
+  long long prev = 0, prev_x = -100;
+  while (std::getline(f, line)) {
+    ++rows;
+    const size_t c1 = line.find(','), c2 = line.find(',', c1 + 1);
+    ASSERT_NE(c2, std::string::npos) << line;
+    const long long clock = std::stoll(line.substr(0, c1));
+    const std::string axis = line.substr(c1 + 1, c2 - c1 - 1);
+    const int dir = std::stoi(line.substr(c2 + 1));
+    EXPECT_GE(clock, prev) << line;
+    prev = clock;
+    if (axis == "X") {
+      x += dir;
+      EXPECT_GE(clock - prev_x, 3 + 4) << line;  // high 3 clocks, low at least 4
+      prev_x = clock;
+    } else {
+      EXPECT_EQ(axis, "Y") << line;
+      y += dir;
+    }
+  }
+  EXPECT_EQ(x, -30);
+  EXPECT_EQ(y, 7);
+  EXPECT_EQ(rows, 37);
+}
+
 // --dump-frames writes the frames and a replay testbench for the variant;
 // Icarus Verilog runs it on the RTL and reproduces the co-simulation's
 // cycles, steps, end position and done pulses.

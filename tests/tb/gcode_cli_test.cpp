@@ -8,6 +8,7 @@
 
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -143,6 +144,70 @@ TEST(GcodeCli, PlotWritesAPng) {
   EXPECT_TRUE(slurp(dir + "/path.png.points.csv").empty());
 }
 
+// --plot-kinematics: speed, acceleration and jerk over time, from the
+// estimator's windows, with the machine's limits; its data files go.
+TEST(GcodeCli, PlotKinematicsWritesAPng) {
+  const std::string dir = scratch_dir("gcode_plot_kinematics");
+  std::ofstream(dir + "/mill.json") << R"({"clock_hz": 1000000, "max_velocity": {"X": 500}})";
+  const CliResult r =
+      run_hwinterp("gcode " + kData + "incremental.ngc --mode direct --progress 0 " + "--machine " +
+                   dir + "/mill.json --plot-kinematics " + dir + "/kin.png");
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  const std::string png = slurp(dir + "/kin.png");
+  ASSERT_GT(png.size(), 8u);
+  EXPECT_EQ(png.substr(1, 3), "PNG");
+  EXPECT_TRUE(slurp(dir + "/kin.png.csv").empty());
+  EXPECT_TRUE(slurp(dir + "/kin.png.json").empty());
+}
+
+// --step-times: the pulses of every axis add up to the lattice point the
+// program ends on, one row per step the report counts.
+TEST(GcodeCli, StepTimesAddUpToTheEndPoint) {
+  const std::string dir = scratch_dir("gcode_step_times");
+  std::ofstream(dir + "/mill.json")
+      << R"({"clock_hz": 1000000, "max_velocity": {"X": 100}, "max_jerk": {"Z": 5e4}})";
+  const CliResult r = run_hwinterp("gcode " + kData + "modal.ngc --mode direct --step-times " +
+                                   dir + "/t.csv --moves-csv " + dir + "/m.csv --json " + dir +
+                                   "/r.json --machine " + dir + "/mill.json");
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  const auto rows = read_csv(dir + "/t.csv");
+  ASSERT_GT(rows.size(), 1u);
+  EXPECT_EQ(rows[0], (std::vector<std::string>{"clock", "axis", "dir"}));
+  std::map<std::string, long long> sum, count;
+  for (size_t i = 1; i < rows.size(); ++i) {
+    sum[rows[i][1]] += std::stoll(rows[i][2]);
+    ++count[rows[i][1]];
+  }
+  const auto moves = read_csv(dir + "/m.csv");
+  const auto end = columns(moves, {"x_steps", "y_steps", "z_steps", "a_steps"}).back();
+  EXPECT_EQ(sum["X"], std::stoll(end[0]));
+  EXPECT_EQ(sum["Y"], std::stoll(end[1]));
+  EXPECT_EQ(sum["Z"], std::stoll(end[2]));
+  EXPECT_EQ(sum["A"], std::stoll(end[3]));
+  const auto report = nlohmann::json::parse(slurp(dir + "/r.json"));
+  const auto steps = report["steps"].get<std::vector<long long>>();
+  ASSERT_EQ(steps.size(), 4u);
+  EXPECT_EQ(count["X"], steps[0]);
+  EXPECT_EQ(count["Y"], steps[1]);
+  EXPECT_EQ(count["Z"], steps[2]);
+  EXPECT_EQ(count["A"], steps[3]);
+
+  // The kinematics the stream asks for, beside the machine's limits: at full
+  // feed (no profile) far beyond them, but never past one step a clock
+  // (at 1 MHz, for 10 ms windows over the program's ~0.5 s).
+  const auto& k = report["kinematics"];
+  EXPECT_EQ(k["window_s"].get<double>(), 0.01);
+  const auto& x = k["axes"]["X"];
+  EXPECT_EQ(x["speed"]["limit"].get<double>(), 100);
+  EXPECT_TRUE(x["accel"]["limit"].is_null());
+  EXPECT_EQ(k["axes"]["Z"]["jerk"]["limit"].get<double>(), 5e4);
+  EXPECT_GT(x["speed"]["max"].get<double>(), 100);
+  EXPECT_LE(x["speed"]["max"].get<double>(), 1e6 / 1000 + x["speed"]["tolerance"].get<double>());
+  EXPECT_GT(x["accel"]["max"].get<double>(), 0);
+  EXPECT_GT(k["path"]["speed"]["max"].get<double>(), 0);
+  EXPECT_NE(r.out.find("peak speed, accel, jerk: X"), std::string::npos) << r.out;
+}
+
 // Bad input: exit 2 with the file, line and word, and nothing runs.
 TEST(GcodeCli, BadInputExitsTwoNamingIt) {
   const std::string dir = scratch_dir("gcode_bad");
@@ -181,6 +246,28 @@ TEST(GcodeCli, BadInputExitsTwoNamingIt) {
 
   r = run_hwinterp("gcode " + kData + "arcs.ngc --canon " + kData + "arcs.canon");
   EXPECT_EQ(r.code, 2);
+}
+
+// A path the machine cannot reach exits 2 before any clock is simulated:
+// beyond the position counters (it used to run for minutes), or out of the
+// machine file's travel, with the line and the axis.
+TEST(GcodeCli, APathOutOfReachExitsTwoBeforeItRuns) {
+  const std::string dir = scratch_dir("gcode_reach");
+  const std::string far = dir + "/far.ngc";
+  std::ofstream(far) << "G21 G90\nG0 X1\nG1 X100000000 F1000\nM2\n";
+  CliResult r = run_hwinterp("gcode " + far + " --mode direct");
+  EXPECT_EQ(r.code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("far.ngc:3: X reaches 1e+08 mm"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("POS_W"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out.find("clocks"), std::string::npos) << "simulated: " << r.out;
+
+  const std::string machine = dir + "/mill.json";
+  std::ofstream(machine) << R"({"travel": {"Y": [-2, 40]}})";
+  r = run_hwinterp("gcode " + kData + "arcs.ngc --mode direct --machine " + machine);
+  EXPECT_EQ(r.code, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("arcs.ngc:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("Y reaches"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("travel [-2, 40]"), std::string::npos) << r.err;
 }
 
 }  // namespace
