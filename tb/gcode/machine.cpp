@@ -171,10 +171,12 @@ Machine read_machine(std::istream& in, const std::string& name) {
         m.travel[i] = {lo, hi};
       });
     } else if (key == "max_velocity" || key == "max_accel" || key == "max_jerk") {
+      // (a pointer to the member: a lambda may not name a structured binding in C++17)
+      double AxisLimits::*slot = key == "max_velocity" ? &AxisLimits::velocity
+                                 : key == "max_accel"  ? &AxisLimits::accel
+                                                       : &AxisLimits::jerk;
       r.per_axis(key, value, m, "a limit", [&](const std::string& k, const json& v, int i) {
-        AxisLimits& l = m.limits[i];
-        double& slot = key == "max_velocity" ? l.velocity : key == "max_accel" ? l.accel : l.jerk;
-        slot = r.positive(k, v, 1e12);
+        m.limits[i].*slot = r.positive(k, v, 1e12);
       });
     } else {
       r.fail(key, value,
