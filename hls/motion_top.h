@@ -73,7 +73,7 @@ class MotionTop {
   void reset() {
     a_ = Buffer();
     b_ = Buffer();
-    a_valid_q_ = b_valid_q_ = false;
+    a_valid_q_ = b_valid_q_ = b_aged_q_ = false;
     a_any_q_ = a_negn_q_ = 0;
     b_low_q_ = b_a0_q_ = 0;
     b_low_zero_q_ = false;
@@ -103,7 +103,9 @@ class MotionTop {
     const bool arc_run = act_q_ && arc_q_;
     const typename Arc::Op op = arc_.op(arc_run);
     const bool cur_last = arc_q_ ? op.last : left_zero_q_;
-    const bool pre_load = b_valid_q_ && (!act_q_ || cur_last);
+    // An arc in buffer B loads only once it has been there for a clock
+    // (rtl/ppc_arc_engine.sv copies it into its look-ahead state first).
+    const bool pre_load = b_valid_q_ && (!act_q_ || cur_last) && (!b_.arc || b_aged_q_);
     bool carry[AXES], fire[AXES], stall = false;
     typename StepStage<AXES, POS_W, TIM_W>::Request want;
     for (int i = 0; i < AXES; ++i) {
@@ -169,6 +171,7 @@ class MotionTop {
         // |delta| <= N: dc reaches 2^ACC_W (ACC_W + 1 bits) for an axis stepping every operation.
         b_.dc[i] = a_.arc ? dc_t(dc_t(a_.mag[i]) + dc_t(a_negn_q_)) : dc_t(a_.mag[i] | m.hm);
     }
+    b_aged_q_ = b_valid_next && b_valid_q_;
     b_valid_q_ = b_valid_next;
     // Buffer A: the offered command's magnitudes and the arc's prep.
     if (cmd_take) take(in.cmd);
@@ -211,6 +214,7 @@ class MotionTop {
   // Buffers.
   Buffer a_, b_;
   bool a_valid_q_, b_valid_q_;
+  bool b_aged_q_;             // buffer B was valid on the clock before too (the same command)
   acc_t a_any_q_, a_negn_q_;  // OR of the magnitudes; 2^ACC_W - N
   acc_t b_low_q_, b_a0_q_;
   bool b_low_zero_q_;

@@ -53,7 +53,7 @@ class PpcArc {
   PpcArc() { reset(); }
 
   void reset() {
-    buf_valid_q_ = false;
+    buf_valid_q_ = buf_aged_q_ = false;
     buf_ = typename Engine::Prep();
     act_q_ = false;
     done_q_ = false;
@@ -81,7 +81,9 @@ class PpcArc {
     const bool tick = feed_.tick(act_q_);
     const bool advance = tick && !stall && !in.abort;
     const bool last = advance && act_q_ && op.last;
-    const bool buf_take = buf_valid_q_ && (!act_q_ || last) && !in.abort;
+    // The engine starts a command only once it has been buffered for a clock
+    // (rtl/ppc_arc_engine.sv copies it into its look-ahead state first).
+    const bool buf_take = buf_valid_q_ && buf_aged_q_ && (!act_q_ || last) && !in.abort;
     const bool cmd_take = in.cmd_valid && !buf_valid_q_;
 
     // Output stage, feed and engine first: they read the registers before they update.
@@ -96,7 +98,9 @@ class PpcArc {
     if (in.abort) act_q_ = false;
     // Command buffer: s, e, E (rtl/ppc_arc_prep.sv).
     if (cmd_take) buf_ = Engine::prepare(in.cmd.center, in.cmd.end, in.cmd.ccw);
-    buf_valid_q_ = !in.abort && (cmd_take || (buf_valid_q_ && !buf_take));
+    const bool buf_valid_next = !in.abort && (cmd_take || (buf_valid_q_ && !buf_take));
+    buf_aged_q_ = buf_valid_next && buf_valid_q_;
+    buf_valid_q_ = buf_valid_next;
     done_q_ = last;
   }
 
@@ -104,6 +108,7 @@ class PpcArc {
 
  private:
   bool buf_valid_q_;  // one-entry command buffer
+  bool buf_aged_q_;   // ...valid on the clock before too
   typename Engine::Prep buf_;
   bool act_q_;  // a command is running
   bool done_q_;

@@ -6,8 +6,11 @@
 // command buffer, the feed, abort and the step/dir stage.
 //
 // prepare() is rtl/ppc_arc_prep.sv (done when a command is buffered);
-// op(run) is the engine's combinational outputs for this clock; clock()
-// is one rising edge. Synthesizable subset: SystemC integers, no heap.
+// op(run) is this clock's operation (in the RTL a register: the engine runs
+// one operation ahead, rtl/ppc_arc_engine.sv "Look-ahead"; the clock on
+// which a buffered command may start is the caller's rule, hls/ppc_arc.h and
+// hls/motion_top.h); clock() is one rising edge. Synthesizable subset:
+// SystemC integers, no heap.
 #pragma once
 
 #include <systemc>

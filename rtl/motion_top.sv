@@ -195,18 +195,19 @@ module motion_top #(
   logic [AXES-1:0] dda_carry, carry, want_valid, want_dir, ready;
   logic [AXES-1:0] unused_block;  // the stage's block_o (READY_Q = 1 only)
   logic [AXES-1:0] unused_carry_next;  // the DDA axes' carry_next_o (for READY_Q = 1 only)
-  logic            eng_step_x, eng_step_y, eng_last;
   logic            unused;  // the half bit (no half preload here)
   assign unused = ^a_top;
-  logic [1:0]      eng_want_valid, eng_want_dir;
+  logic [1:0]      eng_step, eng_want_valid, eng_want_dir;
+  logic [1:0]      unused_eng_step_next, unused_eng_want_dir_next;
+  logic            eng_last, eng_pending, unused_eng_start, unused_eng_run, unused_eng_run_next;
   logic            cur_last;  // this clock's operation ends the running command
-  logic            tick, stall, advance, last, idle_load, arc_run;
+  logic            tick, stall, advance, last, idle_load;
 
-  // The arc engine's last_o is a function of its registers: pre_load needs
-  // no advance.
+  // The arc engine's last_o is a register; an arc in buffer B loads only
+  // once the engine has copied it (eng_pending: rtl/ppc_arc_engine.sv,
+  // "Taking a command"), a line at once.
   assign cur_last  = arc_q ? eng_last : left_zero_q;
-  assign pre_load  = b_valid_q && (!act_q || cur_last);
-  assign arc_run   = act_q && arc_q;
+  assign pre_load  = b_valid_q && (!act_q || cur_last) && (!b_arc_q || eng_pending);
   assign stall     = |(carry & ~ready);
   assign advance   = tick && !stall && !abort_i;
   assign last      = advance && cur_last;
@@ -214,21 +215,32 @@ module motion_top #(
   assign idle_load = pre_load && !act_q && !abort_i;
   assign a_to_b    = a_valid_q && !b_valid_q && !abort_i;
 
+  // The arc engine runs one operation ahead: its outputs are registers, so
+  // the stall (carry & ~ready) waits on no arc arithmetic. The stage stays
+  // READY_Q = 0: a registered stall would need each DDA axis's next carry
+  // (carry_next_o: a load-or-iterate mux and a 33-bit add behind pre_load),
+  // which measured slower (54 MHz against 73 MHz on HX8K, seed 1).
   ppc_arc_engine #(
     .COORD_W(COORD_W)
   ) u_arc (
     .clk_i,
     .rst_ni,
-    .load_i      (load && b_arc_q),
-    .ld_prep_i   (b_prep_q),
-    .ld_ccw_i    (b_ccw_q),
-    .run_i       (arc_run),
-    .advance_i   (advance && arc_run),
-    .step_x_o    (eng_step_x),
-    .step_y_o    (eng_step_y),
-    .want_valid_o(eng_want_valid),
-    .want_dir_o  (eng_want_dir),
-    .last_o      (eng_last)
+    .ld_valid_i     (b_valid_q && b_arc_q),
+    .ld_prep_i      (b_prep_q),
+    .ld_ccw_i       (b_ccw_q),
+    .pending_o      (eng_pending),
+    .start_o        (unused_eng_start),  // = load && b_arc_q
+    .fill_i         (load && b_arc_q),
+    .advance_i      (advance && arc_q),
+    .abort_i,
+    .run_o          (unused_eng_run),  // = act_q && arc_q
+    .step_o         (eng_step),
+    .want_valid_o   (eng_want_valid),
+    .want_dir_o     (eng_want_dir),
+    .last_o         (eng_last),
+    .run_next_o     (unused_eng_run_next),
+    .step_next_o    (unused_eng_step_next),  // for READY_Q = 1 only
+    .want_dir_next_o(unused_eng_want_dir_next)
   );
 
   // The feed word of the move on the next clock (pre_load: the next
@@ -407,10 +419,11 @@ module motion_top #(
       .carry_next_o(unused_carry_next[i])  // the stage's READY_Q = 0: no block to predict
     );
 
-    assign carry[i]      = dda_carry[i] || (on_x_q[i] && eng_step_x) || (on_y_q[i] && eng_step_y);
-    assign want_valid[i] = on_x_q[i] ? arc_run && eng_want_valid[0] :
-                           on_y_q[i] ? arc_run && eng_want_valid[1] : moves_q;
-    assign want_dir[i]   = on_x_q[i] ? eng_want_dir[0] : on_y_q[i] ? eng_want_dir[1] : neg_q;
+    // The engine's operation register is empty (no step, no want) when no
+    // arc runs: its outputs need no gate.
+    assign carry[i]         = dda_carry[i] || (on_x_q[i] && eng_step[0]) || (on_y_q[i] && eng_step[1]);
+    assign want_valid[i]    = on_x_q[i] ? eng_want_valid[0] : on_y_q[i] ? eng_want_valid[1] : moves_q;
+    assign want_dir[i]      = on_x_q[i] ? eng_want_dir[0] : on_y_q[i] ? eng_want_dir[1] : neg_q;
     assign moves_d       = advance ? (pre_load ? b_moves_q : moves_q && !cur_last) :
                                      (idle_load ? b_moves_q : moves_q && !abort_i);
     assign a_mag_d       = cmd_take ? cmd_mag[i*ACC_W +: ACC_W] : a_mag_q;
@@ -453,9 +466,10 @@ module motion_top #(
   // ---------------------------------------------------------------------------
   // Output stage: step/dir timing and position counters.
   step_stage #(
-    .AXES (AXES),
-    .POS_W(POS_W),
-    .TIM_W(TIM_W)
+    .AXES   (AXES),
+    .POS_W  (POS_W),
+    .TIM_W  (TIM_W),
+    .READY_Q(1'b0)
   ) u_out (
     .clk_i,
     .rst_ni,

@@ -8,7 +8,9 @@
 //
 // Command, taken on a clock where cmd_valid_i && cmd_ready_o (one-entry
 // buffer, cmd_ready_o a register, back-to-back commands gapless), all signed
-// COORD_W-bit lattice offsets from the start, which is wherever the axes are:
+// COORD_W-bit lattice offsets from the start, which is wherever the axes are;
+// a command buffered while the engine is idle makes its first operation two
+// clocks later (rtl/ppc_arc_engine.sv, "Taking a command"):
 //   cmd_center_i  centre - start (G-code I, J): I at [0 +: COORD_W], J above
 //   cmd_end_i     end - start, x at [0 +: COORD_W], y above
 //   cmd_ccw_i     1: counter-clockwise, 0: clockwise
@@ -82,12 +84,16 @@ module ppc_arc #(
 `endif
 
   // ---------------------------------------------------------------------------
-  // Command buffer (one entry): s, e, E (rtl/ppc_arc_prep.sv) and the direction.
+  // Command buffer (one entry): s, e, E (rtl/ppc_arc_prep.sv) and the
+  // direction. It stays valid until the engine starts the command (its first
+  // operation moves into the engine's operation register: eng_start), though
+  // the engine copies it a clock or more before (rtl/ppc_arc_engine.sv,
+  // "Taking a command").
   logic              buf_valid_q, buf_valid_d;
   logic [PREP_W-1:0] buf_prep_q, buf_prep_d, cmd_prep;
   logic              buf_ccw_q, buf_ccw_d;
   logic              cmd_take;  // a command is taken this clock
-  logic              buf_take;  // the engine loads the buffer this clock
+  logic              eng_start;  // the engine starts the buffered command this clock
 
   assign cmd_ready_o = !buf_valid_q;
   assign cmd_take    = cmd_valid_i && !buf_valid_q;
@@ -101,22 +107,23 @@ module ppc_arc #(
   );
 
   // ---------------------------------------------------------------------------
-  // Engine.
-  logic            act_q, act_d;  // a command is running
+  // Engine: its operation register is this clock's operation (registers:
+  // act, carry, want_valid, want_dir, eng_last), and it says the next clock's
+  // (act_next, carry_next, want_dir_next), so that the step/dir stage decides
+  // the stall a clock ahead (READY_Q = 1: block, a register per axis).
+  logic            act, act_next;  // a command is running (this clock, the next)
   logic            done_q, done_d;
-  logic            step_x, step_y, eng_last;
-  logic [AXES-1:0] carry;  // this operation steps the axis
+  logic            eng_last, unused_pending;
+  logic [AXES-1:0] carry, carry_next;  // this operation steps the axis (this clock, the next)
   logic [AXES-1:0] want_valid;  // the running command may step the axis
-  logic [AXES-1:0] want_dir;
-  logic [AXES-1:0] ready;  // the axis may start a pulse on the next clock
-  logic [AXES-1:0] unused_block;  // the stage's block_o (READY_Q = 1 only)
+  logic [AXES-1:0] want_dir, want_dir_next;
+  logic [AXES-1:0] unused_ready;  // the stall reads block instead
+  logic [AXES-1:0] block;  // the axis must step and is not ready: stall (a register)
   logic            tick, stall, advance, last;
 
-  assign carry     = {step_y, step_x};
-  assign stall     = |(carry & ~ready);
-  assign advance   = tick && !stall && !abort_i;
-  assign last      = advance && act_q && eng_last;
-  assign buf_take  = buf_valid_q && (!act_q || last) && !abort_i;
+  assign stall   = |block;
+  assign advance = tick && !stall && !abort_i;
+  assign last    = advance && eng_last;
 
   feed_accum #(
     .FEED_W(FEED_W)
@@ -124,9 +131,9 @@ module ppc_arc #(
     .clk_i,
     .rst_ni,
     .feed_i,
-    .run_i     (act_q),
+    .run_i     (act),
     .hold_i    (stall),
-    .run_next_i(act_d),
+    .run_next_i(act_next),
     .tick_o    (tick)
   );
 
@@ -135,24 +142,26 @@ module ppc_arc #(
   ) u_arc (
     .clk_i,
     .rst_ni,
-    .load_i      (buf_take),
-    .ld_prep_i   (buf_prep_q),
-    .ld_ccw_i    (buf_ccw_q),
-    .run_i       (act_q),
-    .advance_i   (advance && act_q),
-    .step_x_o    (step_x),
-    .step_y_o    (step_y),
-    .want_valid_o(want_valid),
-    .want_dir_o  (want_dir),
-    .last_o      (eng_last)
+    .ld_valid_i     (buf_valid_q),
+    .ld_prep_i      (buf_prep_q),
+    .ld_ccw_i       (buf_ccw_q),
+    .pending_o      (unused_pending),
+    .start_o        (eng_start),
+    .fill_i         (1'b1),
+    .advance_i      (advance),
+    .abort_i,
+    .run_o          (act),
+    .step_o         (carry),
+    .want_valid_o   (want_valid),
+    .want_dir_o     (want_dir),
+    .last_o         (eng_last),
+    .run_next_o     (act_next),
+    .step_next_o    (carry_next),
+    .want_dir_next_o(want_dir_next)
   );
 
   always_comb begin
-    act_d = act_q;
-    if (last) act_d = 1'b0;
-    if (buf_take) act_d = 1'b1;
-    if (abort_i) act_d = 1'b0;
-    buf_valid_d = !abort_i && (cmd_take || (buf_valid_q && !buf_take));
+    buf_valid_d = !abort_i && (cmd_take || (buf_valid_q && !eng_start));
     buf_prep_d  = cmd_take ? cmd_prep : buf_prep_q;
     buf_ccw_d   = cmd_take ? cmd_ccw_i : buf_ccw_q;
     done_d      = last;
@@ -163,13 +172,11 @@ module ppc_arc #(
       buf_valid_q <= 1'b0;
       buf_prep_q  <= '0;
       buf_ccw_q   <= 1'b0;
-      act_q       <= 1'b0;
       done_q      <= 1'b0;
     end else begin
       buf_valid_q <= buf_valid_d;
       buf_prep_q  <= buf_prep_d;
       buf_ccw_q   <= buf_ccw_d;
-      act_q       <= act_d;
       done_q      <= done_d;
     end
   end
@@ -177,9 +184,10 @@ module ppc_arc #(
   // ---------------------------------------------------------------------------
   // Output stage: step/dir timing and position counters.
   step_stage #(
-    .AXES (AXES),
-    .POS_W(POS_W),
-    .TIM_W(TIM_W)
+    .AXES   (AXES),
+    .POS_W  (POS_W),
+    .TIM_W  (TIM_W),
+    .READY_Q(1'b1)
   ) u_out (
     .clk_i,
     .rst_ni,
@@ -189,17 +197,17 @@ module ppc_arc #(
     .dir_hold_i,
     .want_valid_i    (want_valid),
     .want_dir_i      (want_dir),
-    .want_dir_next_i (want_dir),  // unused: READY_Q = 0
-    .want_step_next_i('0),  // unused: READY_Q = 0
+    .want_dir_next_i (want_dir_next),
+    .want_step_next_i(carry_next),
     .fire_i          ({AXES{advance}} & carry),
-    .ready_o         (ready),
-    .block_o         (unused_block),  // READY_Q = 0: always 0
+    .ready_o         (unused_ready),
+    .block_o         (block),
     .step_o,
     .dir_o,
     .pos_o
   );
 
-  assign busy_o = act_q || buf_valid_q || (|step_o);
+  assign busy_o = act || buf_valid_q || (|step_o);
   assign done_o = done_q;
 
 `ifdef FORMAL
@@ -209,7 +217,7 @@ module ppc_arc #(
   // commands the buffer and the engine hold, and the invariants of the
   // registers it rests on.
   logic [1:0] f_held;
-  assign f_held = 2'(buf_valid_q) + 2'(act_q);
+  assign f_held = 2'(buf_valid_q) + 2'(act);
 
   core_contract #(
     .AXES  (AXES),
@@ -243,8 +251,9 @@ module ppc_arc #(
 
   always_comb begin
     if (rst_ni) begin
-      a_progress: assert(!(act_q && f_full_q && !abort_i) || advance || (carry & ~ready) != '0);
-      a_tick: assert(!tick || act_q);
+      a_progress: assert(!(act && f_full_q && !abort_i) || advance || (carry & ~unused_ready) != '0);
+      a_tick: assert(!tick || act);
+      a_pend_buf: assert(!unused_pending || buf_valid_q);  // the copy is the buffered command
     end
   end
 `endif

@@ -1,14 +1,8 @@
 // ppc_arc_engine: the point-by-point comparison (PPC) circular-arc engine of
 // rule M (models/ppc.h, models::PpcArcStream: the arc, its bound and its
 // derivation), shared by ppc_arc (its whole engine) and motion_top (its arcs).
-// It holds one arc and decides, per operation, which plane axis steps; the
-// caller owns the command buffer, the feed, abort and the step/dir stage.
-//
-// Load (load_i, wins over advance_i): ld_prep_i from rtl/ppc_arc_prep.sv
-// (s = start - centre, e = end - centre, E = end - start) and ld_ccw_i.
-// run_i says the loaded command is running (the caller's flag: it falls with
-// the last operation or an abort); advance_i does this clock's operation and
-// must imply run_i.
+// It holds the running arc and decides, per operation, which plane axis
+// steps; the caller owns the command buffer, the feed and the step/dir stage.
 //
 // Rule M: the PPC arc on the circle through s until, in the final pass
 // (after `laps` quadrant entries), the axis the arc would step has nothing
@@ -24,12 +18,12 @@
 // quadrant: the other axis's motion sign flips (its a and g negate) and the
 // lap count falls by one.
 //
-// Set-up, on the clock the engine loads: the quadrant of s and of e (a point
-// on an axis belongs to the quadrant the motion enters) give the motion signs
-// and laps = entries from s's quadrant to e's (0..3; same quadrant: 0 if e is
-// ahead of s, 4 if it is behind on both axes, E * m <= 0 per axis; s == e is
-// a full circle, 4). Degenerate commands (|s|^2 < 2, or e == c) have no arc
-// phase.
+// Set-up, when the engine takes a command: the quadrant of s and of e (a
+// point on an axis belongs to the quadrant the motion enters) give the motion
+// signs and laps = entries from s's quadrant to e's (0..3; same quadrant: 0
+// if e is ahead of s, 4 if it is behind on both axes, E * m <= 0 per axis;
+// s == e is a full circle, 4). Degenerate commands (|s|^2 < 2, or e == c)
+// have no arc phase.
 //
 // Operations:
 //   arc phase   one step; in the final pass, if the picked axis has g <= 0,
@@ -49,6 +43,30 @@
 //   F = |p|^2 - |s|^2         FW = COORD_W + 2 (-2|s| + 1 <= F < 2|s| + 1)
 //   closing line |e - p|      MW = COORD_W + 1
 //
+// Look-ahead. The engine runs one operation ahead of the caller: the
+// operation the caller does this clock (its outputs, step_o ... last_o) is a
+// set of registers, and the arc state (F, a, g, the flags, the closing line)
+// is the state after it, from which the next operation is decided. When the
+// caller does the operation (advance_i), or the operation register is empty
+// and the caller lets it fill (fill_i), the decided operation moves into the
+// operation register and the state takes it. So every output is a register,
+// the step/dir stage is told a clock ahead which axes the next clock's
+// operation steps (step_next_o, want_dir_next_o: its registered stall,
+// READY_Q = 1), and the clock's late signal (advance_i) only enables
+// registers: it never waits on the arc's arithmetic, and the arithmetic
+// never waits on it.
+//
+// Taking a command. The caller's buffer offers a command (ld_valid_i: a
+// command the engine has not started). The engine copies it into its state
+// when the state has no operation left (the previous command's last
+// operation has moved into the operation register, or the engine is idle);
+// the copy is pending until its first operation moves into the operation
+// register (start_o: the caller frees the buffer). So commands chain without
+// a gap as long as the next one is buffered before the clock on which the
+// previous one's last operation is done; a command buffered later (or when
+// the engine is idle) starts two clocks after it is buffered (the copy, then
+// its first operation).
+//
 // Timing: the compares an operation needs on the picked axis (a == -1: a
 // quadrant entry; g <= 0: the switch; g == 1, g == 0: landing on e) are
 // registers per axis, decided a clock ahead by compares of the registers
@@ -56,23 +74,33 @@
 // next values: choosing the axis (F's sign) selects flags, not COORD_W-bit
 // words. Each flag equals its compare at every clock.
 //
-// Every output is a function of the registers and run_i (none of advance_i).
-// hls/ppc_arc_engine.h is the same engine in C++.
+// hls/ppc_arc_engine.h is the same arithmetic in C++ (hls/ppc_arc.h and
+// hls/motion_top.h model the look-ahead's start rule).
 module ppc_arc_engine #(
   parameter int COORD_W = 24  // width of the command's signed coordinates (3..60)
 ) (
-  input  logic                 clk_i,         // clock
-  input  logic                 rst_ni,        // asynchronous, active low
-  input  logic                 load_i,        // load the arc in ld_prep_i, ld_ccw_i
-  input  logic [6*COORD_W+3:0] ld_prep_i,     // s, e, E (rtl/ppc_arc_prep.sv)
-  input  logic                 ld_ccw_i,      // 1: counter-clockwise, 0: clockwise
-  input  logic                 run_i,         // the loaded command runs
-  input  logic                 advance_i,     // do this clock's operation (implies run_i)
-  output logic                 step_x_o,      // this clock's operation steps x
-  output logic                 step_y_o,      // this clock's operation steps y
-  output logic [1:0]           want_valid_o,  // the command may still step the axis (x bit 0)
-  output logic [1:0]           want_dir_o,    // the axis's direction, 1: negative (x bit 0)
-  output logic                 last_o         // this clock's operation is the command's last
+  input  logic                 clk_i,            // clock
+  input  logic                 rst_ni,           // asynchronous, active low
+  // The caller's buffer
+  input  logic                 ld_valid_i,       // a command the engine has not started is offered
+  input  logic [6*COORD_W+3:0] ld_prep_i,        // its s, e, E (rtl/ppc_arc_prep.sv)
+  input  logic                 ld_ccw_i,         // its direction, 1: counter-clockwise
+  output logic                 pending_o,        // the offered command is copied, not started
+  output logic                 start_o,          // its first operation moves in this clock (free the buffer)
+  // The caller
+  input  logic                 fill_i,           // an empty operation register may take the next operation
+  input  logic                 advance_i,        // the caller does this clock's operation (implies run_o)
+  input  logic                 abort_i,          // drop the running and the offered command
+  // This clock's operation (registers)
+  output logic                 run_o,            // there is one: a command runs
+  output logic [1:0]           step_o,           // it steps the axis (x bit 0)
+  output logic [1:0]           want_valid_o,     // the command may still step the axis (x bit 0)
+  output logic [1:0]           want_dir_o,       // the axis's direction, 1: negative (x bit 0)
+  output logic                 last_o,           // it is the command's last
+  // The next clock's (the registers' next values)
+  output logic                 run_next_o,       // run_o of the next clock
+  output logic [1:0]           step_next_o,      // step_o of the next clock
+  output logic [1:0]           want_dir_next_o   // want_dir_o of the next clock
 );
   // Parameter check at elaboration: Verilator and Yosys stop with the message
   // (Icarus 11 has no elaboration system tasks: it skips the check). The
@@ -91,7 +119,7 @@ module ppc_arc_engine #(
   localparam logic [PW-1:0] PMinus1 = {PW{1'b1}};
 
   // ---------------------------------------------------------------------------
-  // Set-up of the loaded command: quadrants, motion signs, laps, start state.
+  // Set-up of the offered command: quadrants, motion signs, laps, start state.
   logic [PW-1:0]      ld_sx, ld_sy, ld_ex, ld_ey;
   logic [COORD_W-1:0] ld_dx, ld_dy;
   logic          sx_neg, sy_neg, sx_zero, sy_zero, ex_neg, ey_neg, ex_zero, ey_zero;
@@ -148,7 +176,9 @@ module ppc_arc_engine #(
   assign ld_gy = ld_mneg_y ? -dy_ext : dy_ext;
 
   // ---------------------------------------------------------------------------
-  // Engine.
+  // The arc state: after the operation in the operation register.
+  logic          fin_q, fin_d;  // no operation left (idle, or the last one has moved on)
+  logic          pend_q, pend_d;  // the state holds an offered command, not started
   logic          sw_q, sw_d;  // the next operation loads the closing line (degenerate)
   logic          line_q, line_d;  // the closing line runs
   logic [PW-1:0] ax_q, ax_d, ay_q, ay_d;  // a = p m
@@ -160,22 +190,32 @@ module ppc_arc_engine #(
   // Per axis (x bit 0, y bit 1): a == -1, g <= 0, g == 0, g == 1.
   logic [1:0]    am1_q, am1_d, gle0_q, gle0_d, gz_q, gz_d, gone_q, gone_d;
 
-  logic          arc;  // the arc phase runs
-  logic          line_run;  // the closing line runs
+  // The operation register: this clock's operation.
+  logic          cur_q, cur_d;  // valid
+  logic [1:0]    st_q, st_d, wv_q, wv_d, wd_q, wd_d;  // steps, want_valid, want_dir
+  logic          last_q, last_d;
+
+  // The next operation, decided from the state.
+  logic          arc;  // the arc phase
   logic          pick_x;  // the arc steps x (else y)
   logic [PW-1:0] a_c;  // a of the picked axis
   logic          final_pass, arc_switch, entry, land, arc_last;
-  logic          line_load;  // load the closing line with |g| this clock
+  logic          line_load;  // the operation loads the closing line with |g|
+  logic [1:0]    dec_st, dec_wv, dec_wd;
+  logic          dec_last;
+  logic          take;  // the operation moves into the operation register, the state takes it
+  logic          load;  // the state takes the offered command
+  logic          arc_en;  // the arc registers change
+  logic          use_ld;  // ...to the offered command's set-up (else the stepped state)
   logic [MW-1:0] mag_x, mag_y;  // |g|
   logic          l_x_left, l_y_left, l_step_x, l_step_y, l_last;
   logic [1:0]    l_dir;  // direction of e - p: the sign of g, turned by the motion sign
   logic [1:0]    flip;  // a quadrant entry flips the other axis's motion sign
   // Compares of the registers for the flags' next values, per axis.
   logic [1:0]    am2, ap1, gtwo, gm1, gneg;  // a == -2, a == 1, g == 2, g == -1, g < 0
-  logic [1:0]    ld_am1, ld_gle0, ld_gz, ld_gone;  // the flags of the loaded state
+  logic [1:0]    ld_am1, ld_gle0, ld_gz, ld_gone;  // the flags of the offered set-up
 
-  assign arc        = run_i && !sw_q && !line_q;
-  assign line_run   = run_i && line_q;
+  assign arc        = !fin_q && !sw_q && !line_q;
   // F >= 0 picks the inward axis (a < 0), F < 0 the outward one.
   assign pick_x     = f_q[FW-1] ^ ax_q[PW-1];
   assign a_c        = pick_x ? ax_q : ay_q;
@@ -183,18 +223,31 @@ module ppc_arc_engine #(
   assign arc_switch = final_pass && (pick_x ? gle0_q[0] : gle0_q[1]);
   assign entry      = pick_x ? am1_q[0] : am1_q[1];
   assign land       = pick_x ? gone_q[0] && gz_q[1] : gone_q[1] && gz_q[0];
-  assign arc_last   = !arc_switch && (final_pass || (laps_q == 3'd1 && entry)) && land;
+  // A landing step (g = 1 on the stepped axis) is never a switch (g <= 0).
+  assign arc_last   = (final_pass || (laps_q == 3'd1 && entry)) && land;
   assign mag_x      = MW'(gx_q[GW-1] ? -gx_q : gx_q);
   assign mag_y      = MW'(gy_q[GW-1] ? -gy_q : gy_q);
   assign l_dir      = {gy_q[GW-1] ^ mneg_q[1], gx_q[GW-1] ^ mneg_q[0]};
   assign flip       = pick_x ? 2'b10 : 2'b01;
+  assign line_load  = sw_q || (arc && arc_switch);
+
+  assign dec_st   = arc ? {!arc_switch && !pick_x, !arc_switch && pick_x} :
+                    (line_q && !fin_q) ? {l_step_y, l_step_x} : 2'b00;
+  assign dec_wv   = arc ? 2'b11 : (line_q && !fin_q) ? {l_y_left, l_x_left} : 2'b00;
+  assign dec_wd   = line_q ? lneg_q : mneg_q;
+  assign dec_last = line_q ? l_last : !sw_q && arc_last;
+
+  assign take   = (advance_i || (!cur_q && fill_i)) && !abort_i && !fin_q;
+  assign load   = ld_valid_i && !pend_q && !abort_i && (fin_q || (take && dec_last));
+  assign use_ld = fin_q || dec_last;
+  assign arc_en = load || (take && arc && !arc_switch);
 
   assign am2  = {ay_q == PW'(-2), ax_q == PW'(-2)};
   assign ap1  = {ay_q == PW'(1), ax_q == PW'(1)};
   assign gtwo = {gy_q == GW'(2), gx_q == GW'(2)};
   assign gm1  = {gy_q == {GW{1'b1}}, gx_q == {GW{1'b1}}};
   assign gneg = {gy_q[GW-1], gx_q[GW-1]};
-  // The loaded flags from s and E before the motion sign turns them (no
+  // The set-up's flags from s and E before the motion sign turns them (no
   // negation on the way): a = s m == -1 iff s == -m; g = E m <= 0 iff E m <= 0.
   assign ld_am1  = {ld_mneg_y ? ld_sy == PW'(1) : ld_sy == PMinus1,
                     ld_mneg_x ? ld_sx == PW'(1) : ld_sx == PMinus1};
@@ -204,105 +257,156 @@ module ppc_arc_engine #(
   assign ld_gone = {ld_mneg_y ? ld_dy == '1 : ld_dy == COORD_W'(1),
                     ld_mneg_x ? ld_dx == '1 : ld_dx == COORD_W'(1)};
 
-  assign step_x_o     = arc ? !arc_switch && pick_x : line_run && l_step_x;
-  assign step_y_o     = arc ? !arc_switch && !pick_x : line_run && l_step_y;
-  assign want_valid_o = arc ? 2'b11 : line_run ? {l_y_left, l_x_left} : 2'b00;
-  assign want_dir_o   = line_q ? lneg_q : mneg_q;
-  assign last_o       = (arc && arc_last) || (line_run && l_last);
-  assign line_load    = advance_i && (sw_q || (arc && arc_switch));
+  assign pending_o       = pend_q;
+  assign start_o         = take && pend_q;
+  assign run_o           = cur_q;
+  assign step_o          = st_q;
+  assign want_valid_o    = wv_q;
+  assign want_dir_o      = wd_q;
+  assign last_o          = last_q;
+  assign run_next_o      = cur_d;
+  assign step_next_o     = st_d;
+  assign want_dir_next_o = wd_d;
 
   ppc_line_step #(
     .MAG_W(MW)
   ) u_line (
     .clk_i,
     .rst_ni,
-    .load_i   (line_load),
-    .load_ax_i(mag_x),
-    .load_ay_i(mag_y),
+    .load_i    (take && line_load),
+    .load_ax_i (mag_x),
+    .load_ay_i (mag_y),
     .load_nz_i (~gz_q),
     .load_le1_i(gz_q | gone_q | gm1),  // |g| <= 1
-    .advance_i(advance_i && line_q),
-    .x_left_o (l_x_left),
-    .y_left_o (l_y_left),
-    .step_x_o (l_step_x),
-    .step_y_o (l_step_y),
-    .last_o   (l_last)
+    .advance_i (take && line_q),
+    .x_left_o  (l_x_left),
+    .y_left_o  (l_y_left),
+    .step_x_o  (l_step_x),
+    .step_y_o  (l_step_y),
+    .last_o    (l_last)
   );
 
+  // The operation register: the decided operation on a take; empty after the
+  // caller did the operation with nothing decided, or on an abort.
   always_comb begin
+    cur_d  = cur_q;
+    st_d   = st_q;
+    wv_d   = wv_q;
+    wd_d   = wd_q;
+    last_d = last_q;
+    if (take) begin
+      cur_d  = 1'b1;
+      st_d   = dec_st;
+      wv_d   = dec_wv;
+      wd_d   = dec_wd;
+      last_d = dec_last;
+    end else if (advance_i || abort_i) begin
+      cur_d  = 1'b0;
+      st_d   = 2'b00;
+      wv_d   = 2'b00;
+      last_d = 1'b0;
+    end
+  end
+
+  // The state's phase and the closing line's directions.
+  always_comb begin
+    fin_d  = fin_q;
+    pend_d = pend_q;
     sw_d   = sw_q;
     line_d = line_q;
+    lneg_d = lneg_q;
+    if (take) begin
+      pend_d = 1'b0;
+      if (dec_last) begin
+        fin_d = 1'b1;
+      end else if (line_load) begin
+        sw_d   = 1'b0;
+        line_d = 1'b1;
+        lneg_d = l_dir;
+      end
+    end
+    if (load) begin
+      fin_d  = 1'b0;
+      pend_d = 1'b1;
+      sw_d   = ld_degenerate;
+      line_d = 1'b0;
+    end
+    if (abort_i) begin
+      fin_d  = 1'b1;
+      pend_d = 1'b0;
+    end
+  end
+
+  // The arc registers: the set-up (a command taken while the state has no
+  // operation left, use_ld) or the stepped state. The flags of the stepped
+  // axis (a + 1, g - 1) and, on an entry, of the other one (-a, -g), from
+  // compares of today's registers.
+  always_comb begin
     ax_d   = ax_q;
     ay_d   = ay_q;
     gx_d   = gx_q;
     gy_d   = gy_q;
     f_d    = f_q;
     mneg_d = mneg_q;
-    lneg_d = lneg_q;
     laps_d = laps_q;
     am1_d  = am1_q;
     gle0_d = gle0_q;
     gz_d   = gz_q;
     gone_d = gone_q;
-    if (line_load) begin
-      sw_d   = 1'b0;
-      line_d = 1'b1;
-      lneg_d = l_dir;
-    end else if (advance_i && arc) begin
-      f_d = f_q + {a_c, 1'b1};  // F += 2 p_a m_a + 1
-      // The flags of the stepped axis (a + 1, g - 1) and, on an entry, of the
-      // other one (-a, -g), from compares of today's registers.
-      for (int i = 0; i < 2; i++) begin
-        if (pick_x == (i == 0)) begin
-          am1_d[i]  = am2[i];
-          gle0_d[i] = gle0_q[i] || gone_q[i];
-          gz_d[i]   = gone_q[i];
-          gone_d[i] = gtwo[i];
-        end else if (entry) begin
-          am1_d[i]  = ap1[i];
-          gle0_d[i] = !gneg[i];
-          gone_d[i] = gm1[i];
-        end
-      end
-      if (pick_x) begin
-        ax_d = ax_q + PW'(1);
-        gx_d = gx_q - GW'(1);
-        if (entry) begin
-          ay_d = -ay_q;
-          gy_d = -gy_q;
-        end
+    if (arc_en) begin
+      if (use_ld) begin
+        ax_d   = ld_ax;
+        ay_d   = ld_ay;
+        gx_d   = ld_gx;
+        gy_d   = ld_gy;
+        f_d    = '0;
+        mneg_d = {ld_mneg_y, ld_mneg_x};
+        laps_d = ld_laps;
+        am1_d  = ld_am1;
+        gle0_d = ld_gle0;
+        gz_d   = ld_gz;
+        gone_d = ld_gone;
       end else begin
-        ay_d = ay_q + PW'(1);
-        gy_d = gy_q - GW'(1);
+        f_d = f_q + {a_c, 1'b1};  // F += 2 p_a m_a + 1
+        for (int i = 0; i < 2; i++) begin
+          if (pick_x == (i == 0)) begin
+            am1_d[i]  = am2[i];
+            gle0_d[i] = gle0_q[i] || gone_q[i];
+            gz_d[i]   = gone_q[i];
+            gone_d[i] = gtwo[i];
+          end else if (entry) begin
+            am1_d[i]  = ap1[i];
+            gle0_d[i] = !gneg[i];
+            gone_d[i] = gm1[i];
+          end
+        end
+        if (pick_x) begin
+          ax_d = ax_q + PW'(1);
+          gx_d = gx_q - GW'(1);
+          if (entry) begin
+            ay_d = -ay_q;
+            gy_d = -gy_q;
+          end
+        end else begin
+          ay_d = ay_q + PW'(1);
+          gy_d = gy_q - GW'(1);
+          if (entry) begin
+            ax_d = -ax_q;
+            gx_d = -gx_q;
+          end
+        end
         if (entry) begin
-          ax_d = -ax_q;
-          gx_d = -gx_q;
+          mneg_d = mneg_q ^ flip;
+          laps_d = laps_q - 3'd1;
         end
       end
-      if (entry) begin
-        mneg_d = mneg_q ^ flip;
-        laps_d = laps_q - 3'd1;
-      end
-    end
-    if (load_i) begin
-      sw_d   = ld_degenerate;
-      line_d = 1'b0;
-      ax_d   = ld_ax;
-      ay_d   = ld_ay;
-      gx_d   = ld_gx;
-      gy_d   = ld_gy;
-      f_d    = '0;
-      mneg_d = {ld_mneg_y, ld_mneg_x};
-      laps_d = ld_laps;
-      am1_d  = ld_am1;
-      gle0_d = ld_gle0;
-      gz_d   = ld_gz;
-      gone_d = ld_gone;
     end
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
+      fin_q  <= 1'b1;
+      pend_q <= 1'b0;
       sw_q   <= 1'b0;
       line_q <= 1'b0;
       ax_q   <= '0;
@@ -317,7 +421,14 @@ module ppc_arc_engine #(
       gle0_q <= '1;
       gz_q   <= '1;
       gone_q <= '0;
+      cur_q  <= 1'b0;
+      st_q   <= '0;
+      wv_q   <= '0;
+      wd_q   <= '0;
+      last_q <= 1'b0;
     end else begin
+      fin_q  <= fin_d;
+      pend_q <= pend_d;
       sw_q   <= sw_d;
       line_q <= line_d;
       ax_q   <= ax_d;
@@ -332,6 +443,11 @@ module ppc_arc_engine #(
       gle0_q <= gle0_d;
       gz_q   <= gz_d;
       gone_q <= gone_d;
+      cur_q  <= cur_d;
+      st_q   <= st_d;
+      wv_q   <= wv_d;
+      wd_q   <= wd_d;
+      last_q <= last_d;
     end
   end
 
@@ -340,7 +456,10 @@ module ppc_arc_engine #(
   // flag equals the compare of the register it stands for, at every clock
   // while no g has been the most negative GW-bit value (where g - 1 and -g
   // wrap; no command the widths above accept comes near it, but the proof
-  // has no bound on g: the circle is not in the state).
+  // has no bound on g: the circle is not in the state); the operation
+  // register holds no step, no want and no last while it is empty; a
+  // pending command has not started, so the state has an operation; the
+  // state and the operation register agree (a_state_run, a_cur_*).
   localparam logic [GW-1:0] GMin = {1'b1, {(GW - 1) {1'b0}}};
   logic f_g_ok, f_g_ok_q, f_g_ok_d;
   assign f_g_ok   = f_g_ok_q && gx_q != GMin && gy_q != GMin;
@@ -356,6 +475,16 @@ module ppc_arc_engine #(
           gz_q == {gy_q == '0, gx_q == '0} &&
           gone_q == {gy_q == GW'(1), gx_q == GW'(1)} &&
           gle0_q == {gy_q[GW-1] || gy_q == '0, gx_q[GW-1] || gx_q == '0}));
+      a_empty: assert(cur_q || (st_q == '0 && wv_q == '0 && !last_q));
+      a_pending: assert(!pend_q || !fin_q);
+      // The state and the operation register agree: a state with operations
+      // left that is not a pending copy belongs to the running command, whose
+      // operation the register holds; a held operation that is not the last
+      // leaves operations in the state (its command's), a held last one
+      // leaves none of its command's.
+      a_state_run: assert(fin_q || pend_q || cur_q);
+      a_cur_mid: assert(!(cur_q && !last_q) || (!fin_q && !pend_q));
+      a_cur_last: assert(!(cur_q && last_q) || fin_q || pend_q);
     end
   end
 `endif

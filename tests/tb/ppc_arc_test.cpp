@@ -79,15 +79,16 @@ TYPED_TEST(PpcArcLockstep, PaperArc003) {
 }
 
 // The paper arc's 8 operations at feed 1/2, timing 1,1,1,1 (no stall): 2
-// reset, take, load, operations at clocks 6, 8, ..., 20 (the last one lands
-// on the end and is the command's last: no closing line), the pulse falls,
-// 2 tail edges: 2 + 1 + 1 + 2 * 8 + 1 + 2 = 23.
+// reset, take, the engine's copy of the command (rtl/ppc_arc_engine.sv,
+// "Taking a command"), load, operations at clocks 7, 9, ..., 21 (the last one
+// lands on the end and is the command's last: no closing line), the pulse
+// falls, 2 tail edges: 2 + 1 + 1 + 1 + 2 * 8 + 1 + 2 = 24.
 TYPED_TEST(PpcArcLockstep, PaperArcExactClocks) {
   const VariantSpec l = spec_of<A, TypeParam>();
   const auto r = testing::run_direct<testing::Variant<A, TypeParam>>(
       {arc_case(l, {{0, 0}, {4, 0}, {0, 4}, true}, testing::half_feed_unit_timing<A>(l))});
   testing::expect_all_pass(r, 1);
-  EXPECT_EQ(r[0].cycles, 23u);
+  EXPECT_EQ(r[0].cycles, 24u);
 }
 
 // Full circles (end == start): 8R steps on R = 5, on- and off-axis starts,
