@@ -9,7 +9,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 
 packages=(
-  g++ cmake ninja-build pkg-config
+  g++ make cmake ninja-build pkg-config
   libsystemc-dev verilator libeigen3-dev libgtest-dev libgmock-dev libbenchmark-dev
   yosys nextpnr-ice40 fpga-icestorm fpga-icestorm-chipdb iverilog gtkwave
   python3 python3-venv z3 nlohmann-json3-dev

@@ -130,7 +130,7 @@ def generate(out_dir, rdl_rel):
         files["markdown"] = (
             f"<!-- Generated from {rdl_rel} by {ME}; do not edit. -->\n\n"
             "# motion_soc registers\n\n"
-            "The register map of motion_soc, as PeakRDL-markdown writes it from the\n"
+            "The register map of [motion_soc](soc.md), as PeakRDL-markdown writes it from the\n"
             "SystemRDL description. Byte addresses; 32-bit accesses.\n\n" + md)
 
         cpath = os.path.join(tmp, "regs_cpp.h")
