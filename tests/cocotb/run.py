@@ -24,6 +24,7 @@ def main(argv):
     ap.add_argument("--testcase", default=None)
     ap.add_argument("--seed", type=int, default=1)
     a = ap.parse_args(argv)
+    a.build_dir = os.path.abspath(a.build_dir)  # the tests run in tests/cocotb/
     buses = a.bus.split(",")
     for b in buses:
         if b not in ("axil", "wb"):
