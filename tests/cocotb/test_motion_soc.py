@@ -461,6 +461,44 @@ async def watchdog_stop(dut):
 
 
 @cocotb.test()
+async def abort_and_estop(dut):
+    """CTRL.abort_motion ends the move and drops the FIFO, once; estop_i stops
+    the motion, sets EVENTS.estop and refuses pushes until it is cleared."""
+    bus = await start(dut)
+    await bus.wr("FEED", 1 << 12)
+    for _ in range(3):
+        await push_line(bus, [300, 0, 0])
+    await ClockCycles(dut.clk_i, 200)
+    await bus.wr("CTRL", 1)
+    await ClockCycles(dut.clk_i, 5)
+    st = await bus.rd("STATUS")
+    assert st & 1 << ST["fifo_empty"] and not st & 1 << ST["busy"], f"STATUS 0x{st:x} after abort"
+    assert not st & 1 << ST["stopped"]
+    pos = (await snapshot_pos(bus))[0]
+    assert 0 < pos < 300
+    await push_line(bus, [2, 0, 0])  # taken: an abort does not stop
+    await wait_idle(bus, 500)
+    assert (await snapshot_pos(bus))[0] == pos + 2
+    # estop_i while a move runs.
+    await push_line(bus, [300, 0, 0])
+    await ClockCycles(dut.clk_i, 100)
+    dut.estop_i.value = 1
+    await ClockCycles(dut.clk_i, 3)
+    dut.estop_i.value = 0
+    await ClockCycles(dut.clk_i, 5)
+    ev, st = await bus.rd("EVENTS"), await bus.rd("STATUS")
+    assert ev & 1 << EV["estop"] and st & 1 << ST["stopped"] and not st & 1 << ST["busy"]
+    stop_pos = (await snapshot_pos(bus))[0]
+    assert pos + 2 < stop_pos < pos + 302
+    await push_line(bus, [1, 0, 0])
+    assert (await bus.rd("EVENTS")) & 1 << EV["refused"]
+    await bus.wr("EVENTS", 0xFFFFFFFF)
+    await push_line(bus, [1, 0, 0])
+    await wait_idle(bus, 500)
+    assert (await snapshot_pos(bus))[0] == stop_pos + 1
+
+
+@cocotb.test()
 async def snapshot_and_probe_latch(dut):
     """A snapshot armed for a future TIME is taken at that clock; the probe
     latch takes TIME and the positions at the filtered edge."""
