@@ -498,6 +498,41 @@ def r_folder_graph(_):
             "layer 0 includes no other folder, every other folder only lower layers.</sub>"]
 
 
+def r_soc_timing(_):
+    """docs/soc.md: the timing the cocotb tests measure."""
+    d = load("soc.json")
+    w, p, f = d["watchdog"], d["probe"], d["fifo"]
+    rows = [
+        ("watchdog, `WDOG_PERIOD` = %d: bite after the last kick's write" % w["period"],
+         "%d (P + 1)" % w["bite_after_kick"]),
+        ("probe latch, filter %d: `LATCH_TIME` after the pin rose" % p["filter"],
+         "%d (2 synchronizer + %d filter + 1)" % (p["latch_after_pin"], p["filter"])),
+        ("snapshot armed for `SNAP_AT` = T", "`SNAP_TIME` = T exactly"),
+        ("timed command, `CMD_AT` = T, core idle", "taken at `TIME` = T exactly"),
+        ("FIFO depth %d with the feed held" % f["depth"],
+         "%d pushes taken (%d in the FIFO, %d in the core), the next sets `EVENTS.overflow`"
+         % (f["taken"], f["depth"], f["taken"] - f["depth"])),
+    ]
+    return table(["What", "Clocks"], rows) + ["", source(d)]
+
+
+def r_soc_tests(_):
+    """docs/soc.md: what the cocotb run took and counted."""
+    d = load("soc.json")
+    a, b = d["buses"]["axil"], d["buses"]["wb"]
+
+    def counts(r):
+        return "%d reads, %d writes, %d illegal accesses, %d pushes taken, %d refused (FIFO full)" % (
+            r["read"], r["write"], r["illegal"], r["push"], r["refused"])
+    return ["%d/%d tests pass on AXI4-Lite and %d/%d on Wishbone in %s, the Verilated build "
+            "included (the tests themselves: %.1f s and %.1f s). Every readable word's reset "
+            "value (%d words) and all %d unmapped word addresses are checked on each bus. The "
+            "random traffic (%d operations): AXI4-Lite %s; Wishbone %s." % (
+                a["passed"], a["tests"], b["passed"], b["tests"], duration(d["seconds"]),
+                a["test_seconds"], b["test_seconds"], d["reset_words"], d["unmapped_words"],
+                d["random_ops"], counts(a["random"]), counts(b["random"])), "", source(d)]
+
+
 RENDERERS = {
     "folder-graph": ("tb", r_folder_graph),
     "synth-paths": ("docs/synth.json", r_synth_paths),
@@ -527,6 +562,8 @@ RENDERERS = {
     "netlist": ("docs/data/netlist_check.json", r_netlist),
     "planner": ("docs/data/planner_bench.json", r_planner),
     "synth-blocks": ("docs/data/synth_blocks.json", r_synth_blocks),
+    "soc-timing": ("docs/data/soc.json", r_soc_timing),
+    "soc-tests": ("docs/data/soc.json", r_soc_tests),
 }
 
 
