@@ -1,10 +1,12 @@
 // motion_soc_wb: motion_soc (rtl/motion_soc.sv) behind the Wishbone B4
 // register block PeakRDL-regblock generates from rtl/regs/motion_soc.rdl
 // (rtl/regs/gen/motion_soc_regs_wb.sv). 32-bit data, word addresses (adr_i is
-// the byte address / 4, as LiteX's Wishbone), 4 byte selects. Classic or
-// pipelined: the block never stalls and acknowledges in the clock of the
-// request (ack_o, or err_o on an unmapped address, a read of a write-only or
-// a write of a read-only register), combinationally from cyc_i & stb_i.
+// the byte address / 4, as LiteX's Wishbone), 4 byte selects. Classic
+// cycles (LiteX's): the block acknowledges in the clock of the request (ack_o,
+// or err_o on an unmapped address, a read of a write-only or a write of a
+// read-only register), combinationally from cyc_i & stb_i; stall_o stays 0.
+// Tested with classic single cycles, back to back and with idle gaps
+// (tests/cocotb/); pipelined masters are not tested.
 module motion_soc_wb #(
   parameter int AXES       = 3,
   parameter int ACC_W      = 32,
