@@ -552,6 +552,14 @@ def r_soc_synth(_):
              ("routing not finished in the session; the post-placement estimate (seed %s) was "
               "%.2f MHz" % (e["seeds"][0], e["placed_estimate_mhz"])))),
     ]
+    n = d.get("ice40_narrow")
+    if n:
+        rows.insert(1, (
+            "iCE40 HX8K (ct256), narrow build (%s)" % n["params"],
+            "%d LUT4, %d carry, %d FF, %d SB_RAM40_4K" % (n["lut4"], n["carry"], n["ff"], n["bram"]),
+            "%d/%d logic cells (%d%%); routed Fmax %s MHz (seeds %s)" % (
+                n["lc_used"], n["lc_available"], round(100.0 * n["lc_used"] / n["lc_available"]),
+                ", ".join("%.2f" % f for f in n["fmax_mhz"]), ", ".join(str(x) for x in n["seeds"]))))
     r = d["regs_alone_ice40"]
     h = d["hierarchy_ice40"]
     return table(["Family", "Mapped", "Placed and routed"], rows) + [
