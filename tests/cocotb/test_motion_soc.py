@@ -539,26 +539,40 @@ async def snapshot_and_probe_latch(dut):
 
 @cocotb.test()
 async def step_types(dut):
-    """up/down and quadrature outputs of axis 0 over a move forward and back."""
+    """up/down on axis 0 and quadrature on axis 1 over a move forward and back:
+    the pulse counts, each up/down pulse STEP_LEN clocks long, the quadrature
+    states in order, each held at least STEP_LEN + STEP_SPACE clocks."""
     bus = await start(dut)
-    await bus.wr("STEP_LEN", 2)
-    await bus.wr("STEP_SPACE", 2)
+    step_len, step_space = 3, 2
+    await bus.wr("STEP_LEN", step_len)
+    await bus.wr("STEP_SPACE", step_space)
     await bus.wr("STEP_TYPE", 1 | 2 << 2)  # axis 0 up/down, axis 1 quadrature
-    edges = {"up": 0, "down": 0, "quad": []}
+    edges = {"up": 0, "down": 0, "quad": [], "widths": [], "holds": []}
 
     async def watch():
         pa = pb = 0
         last = (0, 0)
+        clk = since_q = 0
+        high = None
         while True:
             await RisingEdge(dut.clk_i)
             await ReadOnly()
+            clk += 1
             a, b = int(pin(dut, "out_a_o").value), int(pin(dut, "out_b_o").value)
             edges["up"] += (a & 1) and not (pa & 1)
             edges["down"] += (b & 1) and not (pb & 1)
+            ud = (a | b) & 1
+            if ud and high is None:
+                high = clk
+            if not ud and high is not None:
+                edges["widths"].append(clk - high)
+                high = None
             q = ((a >> 1) & 1, (b >> 1) & 1)
             if q != last:
+                if edges["quad"]:
+                    edges["holds"].append(clk - since_q)
                 edges["quad"].append(q)
-                last = q
+                last, since_q = q, clk
             pa, pb = a, b
 
     cocotb.start_soon(watch())
@@ -567,10 +581,14 @@ async def step_types(dut):
     await wait_idle(bus, 2000)
     await ClockCycles(dut.clk_i, 5)
     assert edges["up"] == 7 and edges["down"] == 3, edges
+    assert edges["widths"] == [step_len] * 10, edges["widths"]
     # (A, B) for the phase 0..3: A leads B going forward.
     out = [(0, 0), (1, 0), (1, 1), (0, 1)]
     want = [out[p % 4] for p in range(1, 7)] + [out[p % 4] for p in (5, 4)]
     assert edges["quad"] == want, edges["quad"]
+    assert min(edges["holds"]) >= step_len + step_space, edges["holds"]
+    dut._log.info(f"step types: up/down pulses {step_len} clocks; quadrature states held "
+                  f"{min(edges['holds'])} to {max(edges['holds'])} clocks")
 
 
 @cocotb.test()
