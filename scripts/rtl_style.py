@@ -13,7 +13,10 @@ asynchronous reset and a copy, nothing else,
 
 so every flip-flop's name ends in _q, its next value is computed into x_d
 outside the block (always_comb or assign), and the block holds no enable, no
-arithmetic and no other branch. Exit 1 with one line per offence
+arithmetic and no other branch. One exception: a RAM primitive
+(rtl/prim_ram_*.sv) writes its words and its read register in a block clocked
+by clk_i alone (block RAM has no reset; Yosys infers it only so), every
+target still named _q. Exit 1 with one line per offence
 (file:line: what), 0 when every block keeps the rule.
 """
 import os
@@ -23,6 +26,8 @@ import sys
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 CONST = re.compile(r"^(?:'[01xX]|\d+'[bBdDhH][0-9a-fA-F_xX]+|\d+)$")
 NBA = re.compile(r"([\w.]+)\s*<=\s*([^;]+);")
+RAM_NBA = re.compile(r"([\w.]+)(?:\[[^\]]*\])?\s*<=\s*([^;]+);")
+RAM_HEAD = re.compile(r"always_ff\s*@\s*\(\s*posedge\s+clk_i\s*\)")
 HEAD = re.compile(r"always_ff\s*@\s*\(\s*posedge\s+clk_i\s+or\s+negedge\s+rst_ni\s*\)")
 
 
@@ -64,6 +69,13 @@ def check(path):
         line = code.count("\n", 0, m.start()) + 1
         where = f"{os.path.relpath(path, ROOT)}:{line}"
         head = HEAD.match(code, m.start())
+        ram = RAM_HEAD.match(code, m.start())
+        if ram and os.path.basename(path).startswith("prim_ram_"):
+            body = code[ram.end():block_end(code, ram.end())]
+            for lhs, _ in RAM_NBA.findall(body):
+                if not lhs.endswith("_q"):
+                    bad.append(f"{where}: RAM word or read register `{lhs}` does not end in _q")
+            continue
         if not head:
             bad.append(f"{where}: always_ff not clocked by clk_i with the asynchronous rst_ni")
             continue

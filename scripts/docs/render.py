@@ -498,6 +498,80 @@ def r_folder_graph(_):
             "layer 0 includes no other folder, every other folder only lower layers.</sub>"]
 
 
+def r_soc_timing(_):
+    """docs/soc.md: the timing the cocotb tests measure."""
+    d = load("soc.json")
+    w, p, f = d["watchdog"], d["probe"], d["fifo"]
+    rows = [
+        ("watchdog, `WDOG_PERIOD` = %d: bite after the last kick's write" % w["period"],
+         "%d (P + 1)" % w["bite_after_kick"]),
+        ("probe latch, filter %d: `LATCH_TIME` after the pin rose" % p["filter"],
+         "%d (2 synchronizer + %d filter + 1)" % (p["latch_after_pin"], p["filter"])),
+        ("snapshot armed for `SNAP_AT` = T", "`SNAP_TIME` = T exactly"),
+        ("timed command, `CMD_AT` = T, core idle", "taken at `TIME` = T exactly"),
+        ("FIFO depth %d with the feed held" % f["depth"],
+         "%d pushes taken (%d in the FIFO, %d in the core), the next sets `EVENTS.overflow`"
+         % (f["taken"], f["depth"], f["taken"] - f["depth"])),
+    ]
+    return table(["What", "Clocks"], rows) + ["", source(d)]
+
+
+def r_soc_tests(_):
+    """docs/soc.md: what the cocotb run took and counted."""
+    d = load("soc.json")
+    a, b = d["buses"]["axil"], d["buses"]["wb"]
+
+    def counts(r):
+        return "%d reads, %d writes, %d illegal accesses, %d pushes taken, %d refused (FIFO full)" % (
+            r["read"], r["write"], r["illegal"], r["push"], r["refused"])
+    return ["%d/%d tests pass on AXI4-Lite and %d/%d on Wishbone in %s, the Verilated build "
+            "included (the tests themselves: %.1f s and %.1f s). Every readable word's reset "
+            "value (%d words) and all %d unmapped word addresses are checked on each bus. The "
+            "random traffic (%d operations): AXI4-Lite %s; Wishbone %s." % (
+                a["passed"], a["tests"], b["passed"], b["tests"], duration(d["seconds"]),
+                a["test_seconds"], b["test_seconds"], d["reset_words"], d["unmapped_words"],
+                d["random_ops"], counts(a["random"]), counts(b["random"])), "", source(d)]
+
+
+def r_soc_synth(_):
+    """docs/soc.md: motion_soc's synthesis (motion_soc_axil, default parameters)."""
+    d = load("soc.json")["synth"]
+    i, e = d["ice40"], d["ecp5"]
+    rows = [
+        ("iCE40 HX8K (ct256)", "%d LUT4, %d carry, %d FF, %d SB_RAM40_4K (the FIFO)" % (
+            i["lut4"], i["carry"], i["ff"], i["bram"]),
+         "does not fit: %d/%d logic cells (%d%%)" % (i["lc_used"], i["lc_available"],
+                                                     round(100.0 * i["lc_used"] / i["lc_available"]))),
+        ("ECP5 LFE5U-25F-6 (CABGA256)", "%d LUT4, %d CCU2C, %d FF, %d TRELLIS_DPR16X4 (the FIFO, LUT RAM)" % (
+            e["lut4"], e["ccu2c"], e["ff"], e["dpr16x4"]),
+         "%d/%d combinational cells (%d%%); %s" % (
+             e["comb_used"], e["comb_available"], round(100.0 * e["comb_used"] / e["comb_available"]),
+             ("routed Fmax %s MHz (seeds %s)" % (", ".join("%.2f" % f for f in e["fmax_mhz"]),
+                                                  ", ".join(str(x) for x in e["seeds"])))
+             if e["fmax_mhz"] else
+             ("routing not finished in the session; the post-placement estimate (seed %s) was "
+              "%.2f MHz" % (e["seeds"][0], e["placed_estimate_mhz"])))),
+    ]
+    n = d.get("ice40_narrow")
+    if n:
+        rows.insert(1, (
+            "iCE40 HX8K (ct256), narrow build (%s)" % n["params"],
+            "%d LUT4, %d carry, %d FF, %d SB_RAM40_4K" % (n["lut4"], n["carry"], n["ff"], n["bram"]),
+            "%d/%d logic cells (%d%%); routed Fmax %s MHz (seeds %s)" % (
+                n["lc_used"], n["lc_available"], round(100.0 * n["lc_used"] / n["lc_available"]),
+                ", ".join("%.2f" % f for f in n["fmax_mhz"]), ", ".join(str(x) for x in n["seeds"]))))
+    r = d["regs_alone_ice40"]
+    h = d["hierarchy_ice40"]
+    return table(["Family", "Mapped", "Placed and routed"], rows) + [
+        "",
+        "The register block's share (iCE40 mapping): alone, `motion_soc_regs_axil` is %d LUT4 and "
+        "%d FF; in the unflattened design the register block is %d LUT4 of %d, `motion_soc`'s own "
+        "logic %d LUT4, `motion_top` and its stages the rest (the flattened mapping above is %d "
+        "LUT4 smaller: optimization across the module boundaries)." % (r["lut4"], r["ff"], h["regs_lut4"], h["total_lut4"],
+                                  h["soc_lut4"], h["total_lut4"] - i["lut4"]),
+        "", source(d)]
+
+
 RENDERERS = {
     "folder-graph": ("tb", r_folder_graph),
     "synth-paths": ("docs/synth.json", r_synth_paths),
@@ -527,6 +601,9 @@ RENDERERS = {
     "netlist": ("docs/data/netlist_check.json", r_netlist),
     "planner": ("docs/data/planner_bench.json", r_planner),
     "synth-blocks": ("docs/data/synth_blocks.json", r_synth_blocks),
+    "soc-timing": ("docs/data/soc.json", r_soc_timing),
+    "soc-tests": ("docs/data/soc.json", r_soc_tests),
+    "soc-synth": ("docs/data/soc.json", r_soc_synth),
 }
 
 
