@@ -14,6 +14,7 @@ namespace {
 
 using hwinterp::Json;
 using hwinterp::testing::CliResult;
+using hwinterp::testing::read_csv;
 using hwinterp::testing::run_hwinterp;
 using hwinterp::testing::scratch_dir;
 using hwinterp::testing::slurp;
@@ -170,33 +171,29 @@ TEST(CosimCli, StepTimesHaveEveryPulseWithItsAxisAndDirection) {
       "--step-times " +
       csv);
   ASSERT_EQ(r.code, 0) << r.out << r.err;
-  std::ifstream f(csv);
-  std::string line;
-  std::getline(f, line);
-  EXPECT_EQ(line, "clock,axis,dir");
-  int x = 0, y = 0, rows = 0;
+  const auto rows = read_csv(csv);
+  ASSERT_GT(rows.size(), 1u);
+  EXPECT_EQ(rows[0], (std::vector<std::string>{"clock", "axis", "dir"}));
+  int x = 0, y = 0;
   long long prev = 0, prev_x = -100;
-  while (std::getline(f, line)) {
-    ++rows;
-    const size_t c1 = line.find(','), c2 = line.find(',', c1 + 1);
-    ASSERT_NE(c2, std::string::npos) << line;
-    const long long clock = std::stoll(line.substr(0, c1));
-    const std::string axis = line.substr(c1 + 1, c2 - c1 - 1);
-    const int dir = std::stoi(line.substr(c2 + 1));
-    EXPECT_GE(clock, prev) << line;
+  for (size_t i = 1; i < rows.size(); ++i) {
+    ASSERT_EQ(rows[i].size(), 3u);
+    const long long clock = std::stoll(rows[i][0]);
+    const int dir = std::stoi(rows[i][2]);
+    EXPECT_GE(clock, prev) << i;
     prev = clock;
-    if (axis == "X") {
+    if (rows[i][1] == "X") {
       x += dir;
-      EXPECT_GE(clock - prev_x, 3 + 4) << line;  // high 3 clocks, low at least 4
+      EXPECT_GE(clock - prev_x, 3 + 4) << i;  // high 3 clocks, low at least 4
       prev_x = clock;
     } else {
-      EXPECT_EQ(axis, "Y") << line;
+      EXPECT_EQ(rows[i][1], "Y") << i;
       y += dir;
     }
   }
   EXPECT_EQ(x, -30);
   EXPECT_EQ(y, 7);
-  EXPECT_EQ(rows, 37);
+  EXPECT_EQ(rows.size(), 1u + 37u);
 }
 
 // --dump-frames writes the frames and a replay testbench for the variant;

@@ -19,21 +19,6 @@ namespace {
 
 const std::string kData = std::string(HWINTERP_SOURCE_DIR) + "/tests/data/gcode/";
 
-// The rows of a --moves-csv file: header first.
-std::vector<std::vector<std::string>> read_csv(const std::string& path) {
-  std::vector<std::vector<std::string>> rows;
-  std::ifstream in(path);
-  for (std::string line; std::getline(in, line);) {
-    std::vector<std::string> cells;
-    size_t from = 0;
-    for (size_t comma; (comma = line.find(',', from)) != std::string::npos; from = comma + 1)
-      cells.push_back(line.substr(from, comma - from));
-    cells.push_back(line.substr(from));
-    rows.push_back(cells);
-  }
-  return rows;
-}
-
 // The columns named `names` of every data row.
 std::vector<std::vector<std::string>> columns(const std::vector<std::vector<std::string>>& rows,
                                               const std::vector<std::string>& names) {
