@@ -256,39 +256,37 @@ Kinematics kinematics_of(const tb::KinematicsMonitor& k, const Machine& m) {
   const double hz = static_cast<double>(m.clock_hz);
   const double w = static_cast<double>(k.window_clocks());
   const tb::KinematicsMonitor::Peaks tol = k.tolerance();
-  // units per clock^k -> per s^k
-  auto peak = [&](const tb::KinematicsMonitor::Peak& p, double tol_steps, double unit, int order,
-                  double limit) {
+  // `unit` per clock^k -> per s^k; the tolerance in steps per clock^k times `tol_unit`
+  auto peak = [&](const tb::KinematicsMonitor::Peak& p, double tol_steps, double unit,
+                  double tol_unit, int order, double limit) {
     const double scale = std::pow(hz, order);
     return KinematicPeak{p.value * unit * scale, static_cast<double>(p.clock + 1) / hz,
-                         tol_steps * unit * scale, limit};
+                         tol_steps * tol_unit * scale, limit};
+  };
+  auto row = [&](std::string name, std::string unit, int axis, double unit_per_step,
+                 double tol_unit, const tb::KinematicsMonitor::Peaks& p, const AxisLimits& l) {
+    return KinematicRow{std::move(name),
+                        std::move(unit),
+                        axis,
+                        unit_per_step,
+                        peak(p.speed, tol.speed.value, unit_per_step, tol_unit, 1, l.velocity),
+                        peak(p.accel, tol.accel.value, unit_per_step, tol_unit, 2, l.accel),
+                        peak(p.jerk, tol.jerk.value, unit_per_step, tol_unit, 3, l.jerk)};
   };
   Kinematics out;
   out.window_s = w / hz;
   out.windows = k.windows();
-  double path_unit = 0;  // the tolerance's per-axis errors, added as a vector
-  for (int i = 0; i < kA && i < static_cast<int>(m.has_axis.size()); ++i)
+  // The path's peaks are in mm already; its tolerance adds the per-axis
+  // errors (steps' lengths in mm) as a vector.
+  double path_unit = 0;
+  for (int i = 0; i < kA; ++i)
     if (m.has_axis[i]) path_unit += std::pow(1.0 / static_cast<double>(m.steps_per_unit[i]), 2);
-  path_unit = std::sqrt(path_unit);
-  const tb::KinematicsMonitor::Peaks& p = k.path();
-  const double none = std::numeric_limits<double>::infinity();
-  out.rows.push_back({"path", "mm", peak(p.speed, tol.speed.value, 1, 1, none),
-                      peak(p.accel, tol.accel.value, 1, 2, none),
-                      peak(p.jerk, tol.jerk.value, 1, 3, none)});
-  // The path's peaks are in mm per clock^k already: their tolerance scales
-  // by the per-axis steps' length in mm.
-  out.rows.back().speed.tolerance *= path_unit;
-  out.rows.back().accel.tolerance *= path_unit;
-  out.rows.back().jerk.tolerance *= path_unit;
+  out.rows.push_back(row("path", "mm", -1, 1, std::sqrt(path_unit), k.path(), AxisLimits{}));
   for (int i = 0; i < kAxes; ++i) {
     if (!m.has_axis[i]) continue;
     const double unit = 1.0 / static_cast<double>(m.steps_per_unit[i]);
-    const tb::KinematicsMonitor::Peaks& a = k.axis(i);
-    const AxisLimits& l = m.limits[static_cast<size_t>(i)];
-    out.rows.push_back({std::string(1, kAxisNames[i]), i < kA ? "mm" : "deg",
-                        peak(a.speed, tol.speed.value, unit, 1, l.velocity),
-                        peak(a.accel, tol.accel.value, unit, 2, l.accel),
-                        peak(a.jerk, tol.jerk.value, unit, 3, l.jerk)});
+    out.rows.push_back(row(std::string(1, kAxisNames[i]), i < kA ? "mm" : "deg", i, unit, unit,
+                           k.axis(i), m.limits[static_cast<size_t>(i)]));
   }
   return out;
 }
@@ -460,7 +458,7 @@ Json report_json(const PartProgramSetup& setup, const PartProgramRun& run) {
     put("speed", row.speed);
     put("accel", row.accel);
     put("jerk", row.jerk);
-    if (row.name == "path")
+    if (row.axis < 0)
       kin["path"] = j;
     else
       kin["axes"][row.name] = j;
@@ -475,10 +473,9 @@ Json kinematics_units_json(const PartProgramSetup& setup, const PartProgramRun& 
   j["window_s"] = run.kinematics.window_s;
   j["axes"] = Json::object();
   for (const KinematicRow& row : run.kinematics.rows) {
-    if (row.name == "path") continue;
-    const int i = static_cast<int>(std::string(kAxisNames).find(row.name[0]));
+    if (row.axis < 0) continue;
     Json a;
-    a["unit_per_step"] = 1.0 / static_cast<double>(setup.machine.steps_per_unit[i]);
+    a["unit_per_step"] = row.unit_per_step;
     a["unit"] = row.unit;
     a["limits"] = Json::object();
     if (std::isfinite(row.speed.limit)) a["limits"]["speed"] = row.speed.limit;

@@ -56,8 +56,10 @@ struct KinematicPeak {
   double limit = std::numeric_limits<double>::infinity();  // the machine's; infinity: none
 };
 struct KinematicRow {
-  std::string name;  // "path" or the axis letter
-  std::string unit;  // "mm" or "deg"
+  std::string name;          // "path" or the axis letter
+  std::string unit;          // "mm" or "deg"
+  int axis = -1;             // X..C as 0..5; -1: the path
+  double unit_per_step = 1;  // an axis's mm (deg) per step; the path: 1 (in mm already)
   KinematicPeak speed, accel, jerk;
 };
 // What the step stream asked of the machine: the path (X Y Z) and each axis.
