@@ -186,7 +186,14 @@ class FeedProfile {
     // than level 1 while distance is left: it ends at level 1 with less than
     // one level-tick overshot, rather than at 0 with distance still to go.
     const uint32_t floor = end > 0 ? end : (free ? 0 : 1);
-    const auto fits = [&](uint32_t c, uint32_t w) { return free || cost(c, w, end) <= r_; };
+    // The end level is reached early by e*(L-1)/2 level-ticks, and held: then
+    // the moving sum holds only level e by the move's last operation (its
+    // output lags the trapezoid by that much distance), so the speed there is
+    // at most the end speed.
+    const cost_t settle = cost_t(q_) * cost_t(len_) * cost_t(end) * cost_t(len_ - 1);
+    const auto fits = [&](uint32_t c, uint32_t w) {
+      return free || cost_t(2 * cost(c, w, end) + settle) <= cost_t(2 * r_);
+    };
     uint32_t c = c_;
     if (c_ < target && up_ok && c_ + 1 < (1u << LVL_W) && (fits(c_ + 1, len_) || c_ == 0)) {
       c = c_ + 1;  // from rest, a move too short to fit even one level still starts (it overshoots)
