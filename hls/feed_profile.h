@@ -42,9 +42,10 @@
 // least the ops given (distance >= N), so an engine behind it always reaches
 // its last operation, at a speed of at most a few levels.
 //
-// Commands: valid/ready, one waiting (`pending`) and one next; a command
-// waits at least one tick in pending (the RTL multiplies there), then is
-// taken as next at a tick boundary, and starts when the current move ends.
+// Commands: valid/ready, one waiting (`pending`) and one next; at a tick
+// boundary next becomes current when the current move is done, then pending
+// becomes next: a command is current one whole tick after it became next at
+// the earliest (the RTL computes its costs in that tick).
 // hold_i: feed hold, the target becomes 0 (a controlled stop within the same
 // limits); resume continues. Config (q, L): latched while the block is at
 // rest (nothing queued, v = 0, no step in the window).
@@ -72,7 +73,7 @@ class FeedProfile {
   static constexpr int kDropW = SPD_W - FEED_W;    // speed bits below the feed word
   static constexpr int kRShift = SPD_W - TICK_W;   // R = ops << kRShift
   static constexpr int kRW = OPS_W + kRShift + 2;  // R's bits, sign included
-  static constexpr int kCostW = SPD_W + 2 * LVL_W + LEN_W + 4;
+  static constexpr int kCostW = SPD_W + 2 * LVL_W + 2 * LEN_W + 8;
   static constexpr unsigned kMaxLen = 1u << LEN_W;
   using speed_t = sc_dt::sc_uint<SPD_W + 1>;
   using level_t = sc_dt::sc_uint<LVL_W>;
@@ -108,8 +109,8 @@ class FeedProfile {
     c_ = 0;
     t_ = 0;
     idx_ = 0;
-    up_age_ = kMaxLen + 1;
-    quiet_ = kMaxLen + 1;
+    up_age_ = (4u << LEN_W) - 1;  // as the RTL's all-ones reset: above kMaxLen, "long ago"
+    quiet_ = (4u << LEN_W) - 1;
     r_ = 0;
     cur_ = next_ = pend_ = false;
   }
@@ -128,7 +129,7 @@ class FeedProfile {
     // The feed word and the dither run every clock on the speed in force.
     const uint64_t low_mask = (uint64_t(1) << kDropW) - 1;
     const uint64_t sum = acc_ + (v_ & low_mask);
-    const uint64_t feed_d = (v_ >> kDropW) + (sum >> kDropW);
+    const uint64_t feed_d = ((v_ >> kDropW) + (sum >> kDropW)) & ((uint64_t(2) << FEED_W) - 1);
     const uint64_t acc_d = sum & low_mask;
     const bool rest = !busy();
     const bool take = cmd_valid && !pend_;
@@ -160,12 +161,10 @@ class FeedProfile {
   }
 
   void boundary(bool hold) {
-    // Commands move one place: pending -> next -> current.
-    if (!next_ && pend_) {
-      next_cmd_ = pend_cmd_;
-      next_ = true;
-      pend_ = false;
-    }
+    // Commands move one place a boundary: next -> current (when the current
+    // move is done), then pending -> next. So a command is current at the
+    // second boundary after it was taken at the earliest, and the RTL has a
+    // whole tick to compute with it.
     const bool moving = c_ != 0 || v_ != 0;
     if ((!cur_ || r_ <= 0) && next_) {
       const r_t add = r_t(next_cmd_.ops.to_uint64()) << kRShift;
@@ -175,6 +174,11 @@ class FeedProfile {
       next_ = false;
     } else if (cur_ && r_ <= 0) {
       cur_ = false;
+    }
+    if (!next_ && pend_) {
+      next_cmd_ = pend_cmd_;
+      next_ = true;
+      pend_ = false;
     }
     const bool free = hold || !cur_;  // no distance to fit: only slow down
     const uint32_t target = free ? 0 : cur_cmd_.target.to_uint();
@@ -202,8 +206,9 @@ class FeedProfile {
     }
     const int dc = int(c) - int(c_);
     if (cur_) r_ = r_ - r_t(cost_t(q_) * cost_t(len_) * cost_t(c));
-    const uint64_t qc = q_ * c;
-    v_ = v_ + qc - ring_qc_[idx_];
+    const uint64_t v_mask = (uint64_t(2) << SPD_W) - 1;  // v and q*c: SPD_W + 1 bits, as the RTL
+    const uint64_t qc = (q_ * c) & v_mask;
+    v_ = (v_ + qc - ring_qc_[idx_]) & v_mask;
     ring_qc_[idx_] = qc;
     ring_dc_[idx_] = int8_t(dc);
     idx_ = idx_ + 1 == len_ ? 0 : idx_ + 1;
