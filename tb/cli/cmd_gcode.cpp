@@ -54,6 +54,11 @@ int run_gcode(int argc, char** argv, int first) {
               "full: every move at full feed (the lattice points are the same; machining time "
               "computed from the feed words); programmed: simulate the programmed feeds",
               "full")
+      .option("profile", "scurve|trapezoid|off",
+              "the feed profile in front of motion_top (rtl/feed_profile.sv), overriding the "
+              "machine file's `profile`: moves follow its jerk-limited speed within the "
+              "machine's max_accel and max_jerk")
+      .option("profile-window", "N", "commands the profile's planner looks ahead", "16")
       .option("moves-csv", "FILE", "one row per motion move: programmed end, lattice end reached")
       .option("step-times", "FILE",
               "every step pulse on the wire as CSV: clock,axis,dir (the clock of its rising "
@@ -83,6 +88,9 @@ int run_gcode(int argc, char** argv, int first) {
                         ? gcode::FeedMode::kFull
                         : gcode::FeedMode::kProgrammed;
   if (args.given("machine")) setup.machine = gcode::load_machine(args.str("machine"));
+  if (args.given("profile"))
+    setup.machine.profile = gcode::parse_profile(args.str("profile"), "--profile");
+  setup.profile_window = static_cast<size_t>(args.integer("profile-window", 1, 4096));
   if (args.given("variant")) setup.variant = args.str("variant");
   gcode::part_program_variant(setup);  // a bad --variant stops here
 

@@ -178,13 +178,26 @@ Machine read_machine(std::istream& in, const std::string& name) {
       r.per_axis(key, value, m, "a limit", [&](const std::string& k, const json& v, int i) {
         m.limits[i].*slot = r.positive(k, v, 1e12);
       });
+    } else if (key == "profile") {
+      if (!value.is_string()) r.fail(key, value, "not \"scurve\", \"trapezoid\" or \"off\"");
+      m.profile = parse_profile(value.get<std::string>(), name + ": profile");
     } else {
       r.fail(key, value,
              "unknown key (comment, axes, steps_per_unit, clock_hz, rapid_mm_per_min, "
-             "timing_clocks, travel, max_velocity, max_accel, max_jerk)");
+             "timing_clocks, travel, max_velocity, max_accel, max_jerk, profile)");
     }
   }
   return m;
+}
+
+const char* profile_name(ProfileKind k) {
+  return k == ProfileKind::kScurve ? "scurve" : k == ProfileKind::kTrapezoid ? "trapezoid" : "off";
+}
+
+ProfileKind parse_profile(const std::string& text, const std::string& what) {
+  for (ProfileKind k : {ProfileKind::kOff, ProfileKind::kScurve, ProfileKind::kTrapezoid})
+    if (text == profile_name(k)) return k;
+  throw cli::UsageError(what + ": '" + text + "' is not scurve, trapezoid or off");
 }
 
 Machine load_machine(const std::string& path) {

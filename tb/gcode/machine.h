@@ -72,6 +72,16 @@ struct AxisLimits {
   double jerk = std::numeric_limits<double>::infinity();
 };
 
+// The feed profile a run uses (rtl/feed_profile.sv in front of motion_top):
+// off (every move at its feed word, as before), an S-curve (acceleration and
+// jerk limited), or a trapezoid (acceleration limited: the moving sum is one
+// tick long).
+enum class ProfileKind { kOff, kScurve, kTrapezoid };
+// "off", "scurve", "trapezoid"; parse_profile throws cli::UsageError naming
+// `what` and the value for anything else.
+const char* profile_name(ProfileKind k);
+ProfileKind parse_profile(const std::string& text, const std::string& what);
+
 struct Machine {
   std::array<bool, kAxes> has_axis{true, true, true, true, false, false};  // X Y Z A B C
   std::array<int64_t, kAxes> steps_per_unit{1000, 1000, 1000, 100, 100, 100};
@@ -80,6 +90,7 @@ struct Machine {
   StepTiming timing;
   std::array<Travel, kAxes> travel{};
   std::array<AxisLimits, kAxes> limits{};
+  ProfileKind profile = ProfileKind::kOff;
 
   std::string axes() const;  // "XYZA"
 };

@@ -16,7 +16,10 @@
 #include "tb/cores/motion_top/motion_top_adapter.h"
 #include "tb/gcode/contour.h"
 #include "tb/gcode/limits.h"
+#include "tb/gcode/profile_plan.h"
 #include "tb/lockstep/bench_run.h"
+#include "tb/lockstep/feed_profile_run.h"
+#include "tb/lockstep/profile_feed.h"
 #include "tb/monitor/kinematics.h"
 #include "tb/report/cosim_report.h"
 
@@ -57,8 +60,9 @@ class Program final : public tb::ItemSource<MotionAdapter>, public tb::MoveObser
  public:
   Program(std::unique_ptr<MoveSource> source, const Machine& machine, const MotionWidths& widths,
           FeedMode mode, const std::string& name, std::ostream* moves_csv, std::ostream* points_csv,
-          std::ostream* kinematics_csv, double kinematics_window_s)
-      : source_(std::move(source)),
+          std::ostream* kinematics_csv, double kinematics_window_s, bool profiled)
+      : profiled_(profiled),
+        source_(std::move(source)),
         machine_(machine),
         compiler_(*source_, machine, widths, mode, name,
                   [this](const MoveReport& r) { reports_.push_back(r); }),
@@ -92,6 +96,7 @@ class Program final : public tb::ItemSource<MotionAdapter>, public tb::MoveObser
       path_move_ = info.move_index;
     }
     pending_.push_back({commands_++, info.move_index, info.line, path_});
+    if (profiled_) c.feed = 0;  // the move follows feed_i: the profile's word
     it = tb::command_item<MotionAdapter>(c);
     flush_rows();
     return true;
@@ -191,6 +196,7 @@ class Program final : public tb::ItemSource<MotionAdapter>, public tb::MoveObser
                        [&](const Pending& p) { return p.move == move; });
   }
 
+  bool profiled_;
   std::unique_ptr<MoveSource> source_;
   Machine machine_;
   MotionCompiler compiler_;
@@ -313,9 +319,47 @@ PartProgramRun run_part_program(const PartProgramSetup& setup) {
     check_reach(*source, setup.machine, l.param("POS_W"), l.variant, setup.program);
   }
   auto source = open_source(setup);
+  const bool profiled = setup.machine.profile != ProfileKind::kOff;
   auto prog = std::make_shared<Program>(std::move(source), setup.machine, widths, setup.feed_mode,
                                         setup.program, setup.moves_csv, setup.points_csv,
-                                        setup.kinematics_csv, setup.kinematics_window_s);
+                                        setup.kinematics_csv, setup.kinematics_window_s, profiled);
+
+  // The feed profile: a planner on its own pass over the program, running a
+  // window of commands ahead of the engine, feeding the profile's two faces,
+  // whose word drives feed_i.
+  std::unique_ptr<ProfilePlanner> planner;
+  std::unique_ptr<MoveSource> plan_source;
+  std::unique_ptr<MotionCompiler> plan_compiler;
+  std::unique_ptr<tb::ProfileFeed> profile_feed;
+  bool plan_finished = false;
+  if (profiled) {
+    if (l.feed_w != tb::kProfileFeedW)
+      throw cli::UsageError("--profile: the feed profile's build gives " +
+                            std::to_string(tb::kProfileFeedW) + "-bit feed words; " + l.variant +
+                            " takes FEED_W " + std::to_string(l.feed_w));
+    planner = std::make_unique<ProfilePlanner>(
+        setup.machine, l.axes, tb::feed_profile_build(static_cast<double>(setup.machine.clock_hz)),
+        setup.profile_window, l.feed_w);
+    plan_source = open_source(setup);
+    plan_compiler = std::make_unique<MotionCompiler>(*plan_source, setup.machine, widths,
+                                                     setup.feed_mode, setup.program);
+    profile_feed = std::make_unique<tb::ProfileFeed>(
+        planner->registers().q, planner->registers().len, [&](tb::ProfileWords& w) {
+          ProfileCommand pc;
+          while (!planner->pop(pc)) {
+            if (plan_finished) return false;
+            models::MotionCommand mc;
+            if (plan_compiler->next(mc)) {
+              planner->push(mc);
+            } else {
+              planner->finish();
+              plan_finished = true;
+            }
+          }
+          w = {pc.ops, pc.target, pc.end};
+          return true;
+        });
+  }
 
   // One case from the origin, the machine's step/dir timing, feed_i running.
   tb::Case<MotionAdapter> c;
@@ -331,6 +375,7 @@ PartProgramRun run_part_program(const PartProgramSetup& setup) {
   tb::BenchOptions options = setup.bench;
   options.mode = setup.mode;
   options.observer = prog.get();
+  options.profile_feed = profile_feed.get();
   std::vector<tb::Case<MotionAdapter>> cases;
   cases.push_back(std::move(c));
   const std::unique_ptr<tb::BenchRun> run = chosen.variant().make(l, std::move(cases), options);
@@ -357,8 +402,33 @@ PartProgramRun run_part_program(const PartProgramSetup& setup) {
   r.end_mismatches = prog->end_mismatches();
   r.kinematics = kinematics_of(prog->kinematics(), setup.machine);
   r.all_rows_written = prog->all_rows_written();
+  if (profiled) {
+    const models::ProfileRegisters& g = planner->registers();
+    r.profile = {true,
+                 profile_name(setup.machine.profile),
+                 g.q,
+                 g.len,
+                 g.level_speed,
+                 planner->accel(),
+                 planner->jerk(),
+                 g.max_level,
+                 setup.profile_window,
+                 profile_feed->moves_taken()};
+    if (profile_feed->failed()) r.profile_failures.push_back(profile_feed->failure());
+    // The machine's limits, within the estimator's tolerance, on every axis and the path.
+    for (const KinematicRow& row : r.kinematics.rows) {
+      const std::pair<const char*, const KinematicPeak*> peaks[] = {
+          {"speed", &row.speed}, {"acceleration", &row.accel}, {"jerk", &row.jerk}};
+      for (const auto& [what, p] : peaks)
+        if (std::isfinite(p->limit) && p->max > p->limit + p->tolerance)
+          r.profile_failures.push_back(row.name + " " + what + " " + fmt("%.6g", p->max) +
+                                       " above its limit " + fmt("%.6g", p->limit) + " + " +
+                                       fmt("%.3g", p->tolerance) + " at " + fmt("%.4f", p->at_s) +
+                                       " s");
+    }
+  }
   r.passed = tb::all_passed(r.results) && !r.results.empty() && r.results.front().completed &&
-             r.end_mismatches.empty() && r.all_rows_written;
+             r.end_mismatches.empty() && r.all_rows_written && r.profile_failures.empty();
   return r;
 }
 
@@ -389,6 +459,21 @@ std::string summary_table(const PartProgramSetup& setup, const PartProgramRun& r
                  fmt("%.3f", clock / 1e6) + " MHz)",
              std::to_string(r.cycles) +
                  " clocks = " + fmt("%.6f", static_cast<double>(r.cycles) / clock) + " s"});
+  if (run.profile.on) {
+    const ProfileReport& p = run.profile;
+    s.add_row({"feed profile (" + p.kind + ")",
+               "accel " + fmt("%.4g", p.accel) + " steps/s^2, jerk " +
+                   (p.kind == "scurve" ? fmt("%.4g", p.jerk) + " steps/s^3" : "-") + ", L " +
+                   std::to_string(p.len) + " ticks, " + std::to_string(p.moves) +
+                   " moves, look-ahead " + std::to_string(p.window)});
+    s.add_row(
+        {"machining time at the profile",
+         fmt("%.6f", static_cast<double>(r.cycles) / clock) + " s (" +
+             (run.profile_failures.empty() ? std::string("within the limits")
+                                           : std::to_string(run.profile_failures.size()) +
+                                                 " failures: " + run.profile_failures.front()) +
+             ")"});
+  }
   s.add_row({"max contour error", fmt("%.6f", m.mm) + " mm = " + fmt("%.3f", m.steps) +
                                       " steps (move " + std::to_string(m.move) + ", line " +
                                       std::to_string(m.line) + ")"});
@@ -464,6 +549,22 @@ Json report_json(const PartProgramSetup& setup, const PartProgramRun& run) {
       kin["axes"][row.name] = j;
   }
   report["kinematics"] = kin;
+  const ProfileReport& pr = run.profile;
+  Json prof = Json::object();
+  prof["kind"] = pr.on ? pr.kind : "off";
+  if (pr.on) {
+    prof["q"] = pr.q;
+    prof["len"] = pr.len;
+    prof["level_speed"] = pr.level_speed;
+    prof["max_level"] = pr.max_level;
+    prof["accel"] = pr.accel;
+    prof["jerk"] = pr.jerk;
+    prof["window"] = pr.window;
+    prof["moves"] = pr.moves;
+    prof["time_s"] = static_cast<double>(r.cycles) / static_cast<double>(setup.machine.clock_hz);
+    prof["failures"] = run.profile_failures;
+  }
+  report["profile"] = prof;
   return report;
 }
 

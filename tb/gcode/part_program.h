@@ -45,6 +45,20 @@ struct PartProgramSetup {
   std::ostream* points_csv = nullptr;  // one row per visited point (the plot's); null: none
   std::ostream* kinematics_csv = nullptr;  // one row per estimator window; null: none
   double kinematics_window_s = 0.01;  // the kinematics estimator's window (tb/monitor/kinematics.h)
+  size_t profile_window = 16;  // commands the profile planner looks ahead (machine.profile on)
+};
+
+// The feed profile of a run (machine.profile not off): its registers, the
+// limits it keeps along the path, and the moves it took.
+struct ProfileReport {
+  bool on = false;
+  std::string kind;
+  uint64_t q = 0;
+  unsigned len = 1;
+  double level_speed = 0, accel = 0, jerk = 0;  // operations (steps)/s, /s^2, /s^3
+  uint32_t max_level = 0;
+  size_t window = 0;
+  uint64_t moves = 0;  // the profile's moves taken (one per command)
 };
 
 // One quantity's highest magnitude seen on the wire, beside its limit, in
@@ -86,7 +100,11 @@ struct PartProgramRun {
   std::vector<uint64_t> end_mismatches;  // moves that ended off their rounded programmed end
   Kinematics kinematics;
   bool all_rows_written = false;  // every move reached the moves CSV
-  bool passed = false;            // lockstep, model, timing, end points: everything held
+  ProfileReport profile;
+  // With a profile: the profile's faces disagreed, or the step stream broke a
+  // machine limit beyond the estimator's tolerance (each names which).
+  std::vector<std::string> profile_failures;
+  bool passed = false;  // lockstep, model, timing, end points: everything held
 };
 
 // The variant it will run on (named, or the first with the machine's axes);

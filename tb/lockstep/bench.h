@@ -28,6 +28,7 @@
 #include "tb/lockstep/bench_options.h"
 #include "tb/lockstep/frame.h"
 #include "tb/lockstep/payload_pins.h"
+#include "tb/lockstep/profile_feed.h"
 #include "tb/monitor/stepdir_monitor.h"
 #include "tb/report/frames.h"
 #include "tb/report/step_times.h"
@@ -126,7 +127,7 @@ class Bench {
       frame_.set_cmd(typename A::Command{});
       cmd_loaded_ = false;
     }
-    frame_.feed = settings_.feed;
+    frame_.feed = options_.profile_feed ? options_.profile_feed->clock() : settings_.feed;
     if (setup_changed_) {
       frame_.set_setup(settings_.setup);
       setup_changed_ = false;

@@ -10,6 +10,8 @@
 
 namespace hwinterp::tb {
 
+class ProfileFeed;  // tb/lockstep/profile_feed.h
+
 // Test hooks that prove the checks can fail. Cycles count clock edges from
 // the start of the run (1-based).
 struct FaultPlan {
@@ -61,6 +63,10 @@ struct BenchOptions {
   // Told of every move and every completed command (hwinterp gcode's contour
   // and end points); null: none. Called per move, not per clock.
   MoveObserver* observer = nullptr;
+  // Drives feed_i every clock with a feed profile's word (both of its faces
+  // in lockstep; tb/lockstep/profile_feed.h) instead of the case's constant
+  // feed; null: none. (motion_top moves with feed word 0 follow it.)
+  ProfileFeed* profile_feed = nullptr;
 };
 
 }  // namespace hwinterp::tb

@@ -6,16 +6,17 @@
 #include <stdexcept>
 
 #include "hls/feed_profile.h"
+#include "tb/lockstep/profile_feed.h"
 
 namespace hwinterp::tb {
 namespace {
 
-// The harness's build of the block: 16-bit feed words, 48 speed bits, ticks
+// The harness's build of the block: 24-bit feed words, 48 speed bits, ticks
 // of 1024 clocks (20.48 us at 50 MHz), moving sums up to 1024 ticks (A/J up
 // to 21 ms at 50 MHz), 16-bit levels, 28-bit moves.
-using Profile = hls::FeedProfile<16, 48, 10, 10, 16, 28>;
+using Profile = hls::FeedProfile<kProfileFeedW, 48, 10, 10, 16, 28>;
 constexpr int kTickClocks = 1024;
-constexpr uint64_t kFull = uint64_t(1) << 16;
+constexpr uint64_t kFull = uint64_t(1) << kProfileFeedW;
 constexpr uint64_t kMaxClocks = uint64_t(1) << 36;
 
 }  // namespace

@@ -94,6 +94,8 @@ TEST(Machine, BadValuesNameTheirKey) {
   };
   const Case cases[] = {
       {R"({"spindle": 1})", {"spindle", "unknown key"}},
+      {R"({"profile": "smooth"})", {"profile", "'smooth'", "scurve, trapezoid or off"}},
+      {R"({"profile": 1})", {"profile", "not \"scurve\""}},
       {R"({"clock_hz": "fast"})", {"clock_hz", "\"fast\"", "not a number"}},
       {R"({"clock_hz": true})", {"clock_hz", "true", "not a number"}},
       {R"({"clock_hz": 0})", {"clock_hz", "= 0", "outside"}},

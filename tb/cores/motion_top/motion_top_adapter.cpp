@@ -95,8 +95,9 @@ uint64_t Adapter::work(const Command& c, const VariantSpec& l) {
 
 void Adapter::validate(const Command& c, const models::LatticePoint& from, const VariantSpec& l,
                        const std::string& where) {
-  if (c.feed < 1 || c.feed > full_feed(l))
-    throw UsageError(where + ": feed word " + std::to_string(c.feed) + " is outside 1.." +
+  // 0: the move follows feed_i's word (a feed profile drives it).
+  if (c.feed > full_feed(l))
+    throw UsageError(where + ": feed word " + std::to_string(c.feed) + " is outside 0.." +
                      std::to_string(full_feed(l)) + " (" + l.variant + ")");
   for (int i = 0; i < models::kMotionMaxAxes; ++i) {
     const int64_t d = c.delta[static_cast<size_t>(i)];

@@ -1,0 +1,173 @@
+#include "tb/gcode/profile_plan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "tb/base/args.h"
+
+namespace hwinterp::gcode {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kAccelShare = 0.8;  // of the smallest axis limit; the rest for arcs
+
+using Steps = std::array<double, models::kMotionMaxAxes>;
+
+// Steps per engine operation along a plane tangent t (a PPC operation steps x
+// or y: |s_x| + |s_y| = 1).
+void plane_rate(Steps& s, const std::array<int, 2>& ax, double tx, double ty) {
+  const double n = std::abs(tx) + std::abs(ty);
+  if (n == 0) return;
+  s[static_cast<size_t>(ax[0])] = tx / n;
+  s[static_cast<size_t>(ax[1])] = ty / n;
+}
+
+}  // namespace
+
+ProfilePlanner::ProfilePlanner(const Machine& machine, int axes, const models::ProfileBuild& build,
+                               size_t window, int feed_w)
+    : machine_(machine),
+      axes_(axes),
+      build_(build),
+      window_(std::max<size_t>(window, 1)),
+      feed_w_(feed_w) {
+  double a = kInf, j = kInf;
+  for (int i = 0; i < axes_; ++i) {
+    if (!machine_.has_axis[static_cast<size_t>(i)]) continue;
+    const AxisLimits& l = machine_.limits[static_cast<size_t>(i)];
+    const double spu = static_cast<double>(machine_.steps_per_unit[static_cast<size_t>(i)]);
+    const std::string name(1, kAxisNames[i]);
+    if (!std::isfinite(l.accel))
+      throw cli::UsageError("--machine: the feed profile needs max_accel for axis " + name);
+    if (machine_.profile == ProfileKind::kScurve && !std::isfinite(l.jerk))
+      throw cli::UsageError("--machine: the S-curve profile needs max_jerk for axis " + name);
+    a = std::min(a, l.accel * spu);
+    j = std::min(j, l.jerk * spu);
+  }
+  accel_ = kAccelShare * a;
+  jerk_ = machine_.profile == ProfileKind::kScurve ? kAccelShare * j : 1e30;
+  tick_s_ = std::ldexp(1.0, build_.tick_w) / build_.clock_hz;
+  try {
+    regs_ = models::profile_registers({build_.clock_hz, accel_, jerk_}, build_);
+  } catch (const std::invalid_argument& e) {
+    throw cli::UsageError(std::string("--machine: ") + e.what());
+  }
+  if (machine_.profile == ProfileKind::kScurve) jerk_ = regs_.jerk;
+  accel_ = regs_.accel;
+}
+
+uint32_t ProfilePlanner::brake_level(uint64_t ops, uint32_t next_end) const {
+  // The block's cost in level-ticks (hls/feed_profile.h): enter at e, hold L
+  // ticks, brake to the next end level, settle there.
+  const double budget = static_cast<double>(ops) / (regs_.level_speed * tick_s_);
+  const double len = regs_.len;
+  const auto cost = [&](double e) {
+    const double n = next_end;
+    const double brake = e > n ? (e + n - 1) * (e - n) / 2 : 0;
+    return e * (1 + len) + brake + n * (len - 1) / 2;
+  };
+  uint32_t lo = 0, hi = regs_.max_level;
+  while (lo < hi) {
+    const uint32_t mid = lo + (hi - lo + 1) / 2;
+    if (cost(mid) <= budget)
+      lo = mid;
+    else
+      hi = mid - 1;
+  }
+  return lo;
+}
+
+void ProfilePlanner::push(const models::MotionCommand& c) {
+  Entry e;
+  e.p.ops = models::motion_operations(c);
+  const double n = static_cast<double>(e.p.ops);
+  const double f = build_.clock_hz;
+  double v = std::min(f, static_cast<double>(c.feed) * f / std::ldexp(1.0, feed_w_));
+  if (c.feed == 0) v = f;
+  const auto axis_cap = [&](int i, double steps_per_op) {
+    const AxisLimits& l = machine_.limits[static_cast<size_t>(i)];
+    const double spu = static_cast<double>(machine_.steps_per_unit[static_cast<size_t>(i)]);
+    if (steps_per_op > 0 && std::isfinite(l.velocity))
+      v = std::min(v, l.velocity * spu / steps_per_op);
+  };
+  if (c.kind == models::MotionKind::kLine) {
+    for (int i = 0; i < axes_; ++i) {
+      const double d = static_cast<double>(c.delta[static_cast<size_t>(i)]);
+      e.s_start[static_cast<size_t>(i)] = e.s_end[static_cast<size_t>(i)] = d / n;
+      axis_cap(i, std::abs(d) / n);
+    }
+  } else {
+    const auto ax = models::motion_plane_axes(c.plane);
+    const double cx = static_cast<double>(c.center[0]), cy = static_cast<double>(c.center[1]);
+    const double rx = static_cast<double>(c.end[0]) - cx, ry = static_cast<double>(c.end[1]) - cy;
+    // Tangents: the radius turned by +90 degrees (counter-clockwise) or -90.
+    const double sgn = c.ccw ? 1 : -1;
+    plane_rate(e.s_start, ax, sgn * cy, -sgn * cx);
+    plane_rate(e.s_end, ax, -sgn * ry, sgn * rx);
+    for (int i = 0; i < axes_; ++i) {
+      const double d = static_cast<double>(c.delta[static_cast<size_t>(i)]);
+      if (i != ax[0] && i != ax[1]) {
+        e.s_start[static_cast<size_t>(i)] = e.s_end[static_cast<size_t>(i)] = d / n;
+        axis_cap(i, std::abs(d) / n);
+      } else {
+        axis_cap(i, 1.0);
+      }
+    }
+    const double r = std::hypot(cx, cy);
+    if (r > 0) {
+      v = std::min(v, std::sqrt((1 - kAccelShare) * accel_ / kAccelShare * r));
+      if (machine_.profile == ProfileKind::kScurve) {
+        v = std::min(v, std::cbrt(0.5 * (1 - kAccelShare) * jerk_ / kAccelShare * r * r));
+        v = std::min(v, 0.5 * (1 - kAccelShare) / kAccelShare * jerk_ * r / (3 * accel_));
+      }
+    }
+  }
+  e.p.target_speed = v;
+  e.p.target = std::max<uint32_t>(1, models::profile_level(regs_, v));
+  // The junction from the command before into this one.
+  if (!q_.empty()) {
+    Entry& prev = q_.back();
+    double vj = kInf;
+    for (int i = 0; i < axes_; ++i) {
+      const double jump =
+          std::abs(prev.s_end[static_cast<size_t>(i)] - e.s_start[static_cast<size_t>(i)]);
+      if (jump == 0) continue;
+      const double a = machine_.limits[static_cast<size_t>(i)].accel *
+                       static_cast<double>(machine_.steps_per_unit[static_cast<size_t>(i)]);
+      vj = std::min(vj, a * tick_s_ / jump);
+    }
+    prev.max_end =
+        std::min<double>({vj == kInf ? 1e300 : models::profile_level(regs_, vj),
+                          static_cast<double>(prev.p.target), static_cast<double>(e.p.target)});
+  }
+  q_.push_back(e);
+  plan_back();
+}
+
+void ProfilePlanner::finish() {
+  finished_ = true;
+  plan_back();
+}
+
+void ProfilePlanner::plan_back() {
+  if (q_.empty()) return;
+  // The last known command ends at rest until what follows is known.
+  uint32_t next_end = 0;
+  q_.back().p.end = 0;
+  for (size_t k = q_.size() - 1; k-- > 0;) {
+    const Entry& next = q_[k + 1];
+    next_end = next.p.end;
+    const uint32_t by_brake = brake_level(next.p.ops, next_end);
+    q_[k].p.end = static_cast<uint32_t>(std::min<double>(q_[k].max_end, by_brake));
+  }
+}
+
+bool ProfilePlanner::pop(ProfileCommand& out) {
+  if (q_.empty() || (!finished_ && q_.size() <= window_)) return false;
+  out = q_.front().p;
+  q_.pop_front();
+  return true;
+}
+
+}  // namespace hwinterp::gcode

@@ -1,0 +1,94 @@
+#include "tb/lockstep/profile_feed.h"
+
+#include <sstream>
+
+#include "Vfeed_profile_harness_cc.h"
+#include "hls/feed_profile.h"
+#include "verilated.h"
+
+namespace hwinterp::tb {
+
+using Profile = hls::FeedProfile<kProfileFeedW, 48, 10, 10, 16, 28>;
+
+struct ProfileFeed::Faces {
+  VerilatedContext context;
+  std::unique_ptr<Vfeed_profile_harness_cc> rtl;
+  Profile hls;
+  uint64_t q = 0;
+  unsigned len = 1;
+};
+
+ProfileFeed::ProfileFeed(uint64_t q, unsigned len, std::function<bool(ProfileWords&)> next)
+    : f_(std::make_unique<Faces>()), next_(std::move(next)) {
+  f_->q = q;
+  f_->len = len;
+  f_->rtl = std::make_unique<Vfeed_profile_harness_cc>(&f_->context);
+  f_->hls.reset();
+  auto& r = *f_->rtl;
+  r.q_i = q;
+  r.len_i = len;
+  r.cmd_valid_i = 0;
+  r.hold_i = 0;
+  r.rst_ni = 0;
+  for (int e : {0, 1, 0}) {  // reset over a rising edge
+    r.clk_i = e;
+    r.eval();
+  }
+  r.rst_ni = 1;
+  r.eval();
+}
+
+ProfileFeed::~ProfileFeed() {
+  f_->rtl->final();
+  f_->rtl.reset();
+  Verilated::threadContextp(Verilated::defaultContextp());
+}
+
+bool ProfileFeed::busy() const { return f_->hls.busy(); }
+
+uint64_t ProfileFeed::clock() {
+  auto& r = *f_->rtl;
+  Profile& h = f_->hls;
+  if (!valid_ && !done_) {
+    if (next_(offered_))
+      valid_ = true;
+    else
+      done_ = true;
+  }
+  const uint64_t feed = h.feed();
+  if (failure_.empty()) {
+    const auto s = h.state();
+    if (r.feed_o != feed || r.level_o != s.c || r.speed_o != s.v || r.busy_o != h.busy() ||
+        r.cmd_ready_o != h.cmd_ready()) {
+      std::ostringstream os;
+      os << "feed profile, clock " << clocks_ << ": RTL feed " << r.feed_o << " level " << r.level_o
+         << " speed " << r.speed_o << ", HLS feed " << feed << " level " << s.c << " speed " << s.v;
+      failure_ = os.str();
+    }
+  }
+  Profile::Command cmd;
+  cmd.ops = offered_.ops;
+  cmd.target = offered_.target;
+  cmd.end = offered_.end;
+  const bool take = valid_ && h.cmd_ready();
+  r.q_i = f_->q;
+  r.len_i = f_->len;
+  r.cmd_valid_i = valid_;
+  r.cmd_ops_i = static_cast<uint32_t>(offered_.ops);
+  r.cmd_target_i = offered_.target;
+  r.cmd_end_i = offered_.end;
+  r.hold_i = 0;
+  r.clk_i = 1;
+  r.eval();
+  h.clock(valid_, cmd, false, f_->q, f_->len);
+  r.clk_i = 0;
+  r.eval();
+  if (take) {
+    valid_ = false;
+    ++taken_;
+  }
+  ++clocks_;
+  return feed;
+}
+
+}  // namespace hwinterp::tb
