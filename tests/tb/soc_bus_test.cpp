@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cstdint>
 #include <cstdio>
 #include <deque>
@@ -366,6 +367,163 @@ TEST(SocBusRandom, EdgeWidthsLoseNoCommand) {
   using Soc = SocOf<motion_top_edge_cfg>;
   random_traffic<Soc::Axil, bus::Axi4LiteMaster, Soc>(7, 3, 150, 2);
   random_traffic<Soc::Wb, bus::WishboneMaster, Soc>(8, 3, 150, 2);
+}
+
+// The HLS face (hls/motion_soc.h, hls/motion_soc_bus.h) against the
+// Verilated top on every clock (tb/bus/hls_shadow.h) under random traffic to
+// every register: commands (lines and half circles, timed or not), feed
+// holds, step timing and step types, the watchdog, aborts, snapshots, the
+// probe latch (random probe_i), estop_i, event clears, unmapped words, random
+// byte strobes, with wait states. The two must agree on every bus response
+// and every output pin for the whole run.
+template <class Cfg, class Model, template <class> class Master, class Shadow>
+void random_lockstep(uint64_t seed, uint64_t clocks) {
+  using Probe = SocOf<Cfg>;
+  VerilatedContext ctx;
+  Model m(&ctx);
+  Master<Model> master(bus::WaitStates{static_cast<uint32_t>(seed % 3), seed});
+  Shadow shadow;
+  std::mt19937_64 rng(seed);
+  auto uni = [&](int64_t lo, int64_t hi) {
+    return std::uniform_int_distribution<int64_t>(lo, hi)(rng);
+  };
+  m.probe_i = 0;
+  m.estop_i = 0;
+  m.rst_ni = 0;
+  master.drive(m);
+  for (int i = 0; i < 2; ++i) {
+    m.clk_i = 0;
+    m.eval();
+    shadow.before_edge(m);
+    m.clk_i = 1;
+    m.eval();
+  }
+  m.rst_ni = 1;
+  const uint32_t full_feed = 1u << Cfg::FEED_W;
+  std::array<int64_t, 2> center{}, end{};
+  bool ccw = false;
+  uint64_t arc_ops = 0;  // the last half circle's operation count
+  uint64_t estop_left = 0;
+  int writes = 0, reads = 0, pushes = 0, dones = 0, steps = 0;
+  uint32_t prev_step = 0;
+  for (uint64_t c = 1; c <= clocks; ++c) {
+    if (master.idle() && uni(0, 9) < 8) {
+      bus::BusTxn t;
+      t.strb = uni(0, 9) == 0 ? static_cast<uint8_t>(uni(0, 15)) : 0xF;
+      const int64_t k = uni(0, 99);
+      auto w = [&](uint32_t a, int64_t d) {
+        t.write = true;
+        t.addr = a;
+        t.data = static_cast<uint32_t>(d);
+      };
+      if (k < 12) {  // a command's staging
+        const int64_t f = uni(0, 5);
+        if (f < 3) {
+          w(regs::kCmdDelta0 + 4u * static_cast<uint32_t>(uni(0, Cfg::AXES - 1)), uni(-30, 30));
+        } else if (f == 3) {  // a half circle: the end diametric to the start
+          center = {uni(-15, 15), uni(-15, 15)};
+          end = {2 * center[0], 2 * center[1]};
+          ccw = uni(0, 1);
+          w(regs::kCmdCenter0, center[0]);
+          arc_ops = models::motion_arc_ops(center, end, ccw);
+        } else {
+          w(regs::kCmdFeed, uni(0, 3) ? full_feed : uni(0, full_feed));
+        }
+      } else if (k < 20) {  // the rest of the arc, the flags, the push
+        const int64_t f = uni(0, 5);
+        if (f == 0) w(regs::kCmdCenter1, center[1]);
+        if (f == 1) w(regs::kCmdEnd0, end[0]);
+        if (f == 2) w(regs::kCmdEnd1, end[1]);
+        if (f == 3) w(regs::kCmdOps, static_cast<int64_t>(arc_ops));
+        if (f >= 4) {
+          const bool arc = uni(0, 2) == 0, timed = uni(0, 4) == 0;
+          w(regs::kCmdFlags,
+            (arc ? bus::kArcBit : 0) | (static_cast<uint32_t>(uni(0, 2)) << bus::kPlaneLsb) |
+                (ccw ? bus::kCcwBit : 0) | (timed ? bus::field_bit("cmd_flags", "timed") : 0));
+        }
+      } else if (k < 30) {
+        w(regs::kCmdPush, 1);
+        ++pushes;
+      } else if (k < 32) {
+        w(regs::kCmdAt, static_cast<int64_t>(c) + uni(-50, 400));
+      } else if (k < 35) {
+        w(regs::kFeed, uni(0, 3) ? full_feed : uni(0, full_feed));
+      } else if (k < 38) {
+        static const uint32_t kTiming[] = {regs::kStepLen, regs::kStepSpace, regs::kDirSetup,
+                                           regs::kDirHold};
+        w(kTiming[uni(0, 3)], uni(0, 6));
+      } else if (k < 40) {
+        w(regs::kStepType, uni(0, 0xFFF));
+      } else if (k < 42) {
+        w(regs::kWdogPeriod, uni(0, 2) ? 0 : uni(1, 400));
+      } else if (k < 45) {
+        w(regs::kWdogKick, 1);
+      } else if (k < 46) {
+        w(regs::kCtrl, 1);  // abort
+      } else if (k < 50) {
+        w(regs::kEvents, uni(0, 0x1FF));
+      } else if (k < 52) {
+        w(regs::kSnapAt, static_cast<int64_t>(c) + uni(-20, 300));
+      } else if (k < 54) {
+        w(regs::kSnapCtrl, 1);
+      } else if (k < 56) {
+        w(regs::kProbeCfg, uni(0, 6) | (uni(0, 1) << 16) | ((uni(0, 5) == 0) << 17));
+      } else if (k < 58) {
+        w(regs::kLatchCtrl, 1);
+      } else if (k < 60) {
+        w(uni(0, 1) ? regs::kIrqEn : regs::kFifoLow, uni(0, 0x1FF));
+      } else if (k < 63) {  // any word, mapped or not, written with anything
+        w(static_cast<uint32_t>(uni(0, 255)) * 4, uni(0, 0xFFFFFFFF));
+      } else {  // a read of any word (mostly the map)
+        t.write = false;
+        t.addr = static_cast<uint32_t>(uni(0, 3) ? uni(0, 0x23C / 4) : uni(0, 255)) * 4;
+      }
+      t.write ? ++writes : ++reads;
+      master.issue(t);
+    }
+    if (uni(0, 199) == 0) m.probe_i = !m.probe_i;
+    if (estop_left == 0 && uni(0, 19999) == 0) estop_left = static_cast<uint64_t>(uni(1, 20));
+    m.estop_i = estop_left > 0;
+    if (estop_left) --estop_left;
+    master.drive(m);
+    m.clk_i = 0;
+    m.eval();
+    master.sample(m);
+    shadow.before_edge(m);
+    m.clk_i = 1;
+    m.eval();
+    const bool done = Probe::done(m);
+    shadow.after_edge(m, done, c);
+    const auto& mm = shadow.mismatch();
+    ASSERT_FALSE(shadow.failed()) << "seed " << seed << ": clock " << mm.clock << " " << mm.what
+                                  << " HLS " << mm.hls << " RTL " << mm.rtl;
+    bus::BusRsp rsp;
+    master.take(rsp);
+    dones += done;
+    const uint32_t step = m.out_a_o;
+    steps += __builtin_popcount(step & ~prev_step);
+    prev_step = step;
+  }
+  std::printf(
+      "seed %llu: %llu clocks, %d writes (%d pushes), %d reads, %d commands done, %d "
+      "out_a rises: HLS = RTL on every clock\n",
+      static_cast<unsigned long long>(seed), static_cast<unsigned long long>(clocks), writes,
+      pushes, reads, dones, steps);
+  EXPECT_GT(dones, 3);
+  EXPECT_GT(steps, 200);
+}
+
+TEST(SocBusHls, RandomTrafficMatchesTheRtlOnEveryClock) {
+  using N3 = SocOf<motion_top_n3_cfg>;
+  using Edge = SocOf<motion_top_edge_cfg>;
+  random_lockstep<motion_top_n3_cfg, N3::Axil, bus::Axi4LiteMaster,
+                  bus::AxilShadow<motion_top_n3_cfg>>(11, 60000);
+  random_lockstep<motion_top_n3_cfg, N3::Wb, bus::WishboneMaster, bus::WbShadow<motion_top_n3_cfg>>(
+      12, 60000);
+  random_lockstep<motion_top_edge_cfg, Edge::Axil, bus::Axi4LiteMaster,
+                  bus::AxilShadow<motion_top_edge_cfg>>(13, 60000);
+  random_lockstep<motion_top_edge_cfg, Edge::Wb, bus::WishboneMaster,
+                  bus::WbShadow<motion_top_edge_cfg>>(14, 60000);
 }
 
 }  // namespace
