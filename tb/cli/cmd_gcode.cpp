@@ -89,6 +89,8 @@ int run_gcode(int argc, char** argv, int first) {
   setup.mode = args.choice("mode", {"systemc", "direct"});
   if (args.given("bus")) setup.bus = args.choice("bus", {"axi4lite", "wishbone"});
   setup.bus_waits = static_cast<uint32_t>(args.integer("bus-waits", 0, 64));
+  if (args.given("bus-waits") && setup.bus.empty())
+    throw UsageError("--bus-waits: give --bus axi4lite or --bus wishbone with it");
   setup.feed_mode = args.choice("feed", {"full", "programmed"}) == "full"
                         ? gcode::FeedMode::kFull
                         : gcode::FeedMode::kProgrammed;

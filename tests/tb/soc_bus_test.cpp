@@ -89,12 +89,19 @@ TEST_P(SocBusGcode, EdgeWidthsReachTheLockstepLatticePoints) {
 
 INSTANTIATE_TEST_SUITE_P(Buses, SocBusGcode, ::testing::Values("axi4lite", "wishbone"));
 
-TEST(SocBusCli, BadBusValueExits2NamingIt) {
+TEST(SocBusCli, BadBusOptionsExit2NamingThem) {
   const CliResult r =
       run_hwinterp("gcode " + kData + "arcs.ngc --mode direct --progress 0 --bus pci");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("'pci'"), std::string::npos) << r.err;
   EXPECT_EQ(r.out.find("lockstep"), std::string::npos) << "ran something: " << r.out;
+  const CliResult w = run_hwinterp("gcode " + kData + "arcs.ngc --progress 0 --bus-waits 2");
+  EXPECT_EQ(w.code, 2);
+  EXPECT_NE(w.err.find("--bus-waits"), std::string::npos) << w.err;
+  const CliResult n =
+      run_hwinterp("gcode " + kData + "arcs.ngc --progress 0 --bus wishbone --bus-waits 65");
+  EXPECT_EQ(n.code, 2);
+  EXPECT_NE(n.err.find("65"), std::string::npos) << n.err;
 }
 
 // The check itself: a different step, a different grouping, a command ending
