@@ -110,8 +110,12 @@ class MotionSoc {
   uint32_t out_b() const { return out_b_; }
   bool irq() const { return irq_; }
   bool done() const { return core_out_.done; }
+  // Internal state the testbench compares with the RTL's (tb/bus/hls_shadow.h).
+  uint32_t fifo_count() const { return cnt_q_; }  // in the RAM, the head not counted
+  bool fifo_head() const { return head_q_; }
   uint32_t fifo_level() const { return cnt_q_ + (head_q_ ? 1u : 0u); }
   uint64_t time() const { return time_q_; }
+  uint32_t wdog_left() const { return wdog_left_q_; }
 
  private:
   // A FIFO entry (rtl/motion_soc.sv's ENTRY_W bits, as fields).

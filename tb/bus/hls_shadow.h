@@ -7,7 +7,9 @@
 //   - Wishbone: in the clock of the request, ack, err, and dat_o on a read's
 //     ack;
 //   - both: after the edge, out_a_o and out_b_o of every axis, irq_o, and
-//     motion_top's done_o.
+//     motion_top's done_o; and inside motion_soc (read through
+//     tb/bus/motion_soc_probe.vlt) the FIFO's count and head, TIME and the
+//     watchdog's count.
 // The first difference ends the run; it is reported with its clock.
 #pragma once
 
@@ -47,11 +49,20 @@ class ShadowBase {
     mm_ = {clock, what, hls, rtl};
     return true;
   }
+  // The RTL's internal values as motion_soc's registers hold them.
+  struct Inside {
+    uint64_t cnt, head, time, wdog_left;
+  };
   template <class Soc, class M>
-  void compare_pins(const Soc& soc, const M& m, bool done, uint64_t clock, uint32_t mask) {
+  void compare_pins(const Soc& soc, const M& m, bool done, const Inside& in, uint64_t clock,
+                    uint32_t mask) {
     differ(clock, "out_a_o", soc.out_a() & mask, m.out_a_o & mask) ||
         differ(clock, "out_b_o", soc.out_b() & mask, m.out_b_o & mask) ||
-        differ(clock, "irq_o", soc.irq(), m.irq_o) || differ(clock, "done", soc.done(), done);
+        differ(clock, "irq_o", soc.irq(), m.irq_o) || differ(clock, "done", soc.done(), done) ||
+        differ(clock, "u_soc.cnt_q", soc.fifo_count(), in.cnt) ||
+        differ(clock, "u_soc.head_q", soc.fifo_head(), in.head) ||
+        differ(clock, "u_soc.time_q", soc.time(), in.time) ||
+        differ(clock, "u_soc.wdog_left_q", soc.wdog_left(), in.wdog_left);
   }
   ShadowMismatch mm_;
 };
@@ -89,7 +100,12 @@ class AxilShadow : public ShadowBase<AxilShadow<Cfg>> {
         (o.bvalid && this->differ(clock, "s_axil_bresp_o", o.bresp, m.s_axil_bresp_o)) ||
         (o.rvalid && this->differ(clock, "s_axil_rresp_o", o.rresp, m.s_axil_rresp_o)) ||
         (o.rvalid && this->differ(clock, "s_axil_rdata_o", o.rdata, m.s_axil_rdata_o));
-    this->compare_pins(face_.soc(), m, done, clock, (1u << Cfg::AXES) - 1);
+    const auto* r = m.rootp;
+    const typename ShadowBase<AxilShadow<Cfg>>::Inside in{
+        r->motion_soc_axil__DOT__u_soc__DOT__cnt_q, r->motion_soc_axil__DOT__u_soc__DOT__head_q,
+        r->motion_soc_axil__DOT__u_soc__DOT__time_q,
+        r->motion_soc_axil__DOT__u_soc__DOT__wdog_left_q};
+    this->compare_pins(face_.soc(), m, done, in, clock, (1u << Cfg::AXES) - 1);
   }
 
  private:
@@ -125,7 +141,11 @@ class WbShadow : public ShadowBase<WbShadow<Cfg>> {
   template <class M>
   void after_edge(const M& m, bool done, uint64_t clock) {
     clock_ = clock;
-    this->compare_pins(face_.soc(), m, done, clock, (1u << Cfg::AXES) - 1);
+    const auto* r = m.rootp;
+    const typename ShadowBase<WbShadow<Cfg>>::Inside in{
+        r->motion_soc_wb__DOT__u_soc__DOT__cnt_q, r->motion_soc_wb__DOT__u_soc__DOT__head_q,
+        r->motion_soc_wb__DOT__u_soc__DOT__time_q, r->motion_soc_wb__DOT__u_soc__DOT__wdog_left_q};
+    this->compare_pins(face_.soc(), m, done, in, clock, (1u << Cfg::AXES) - 1);
   }
 
  private:

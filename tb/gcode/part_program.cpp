@@ -569,13 +569,15 @@ std::string summary_table(const PartProgramSetup& setup, const PartProgramRun& r
                    (b.first_end_mismatch < 0 ? std::string(", every command ends on the same point")
                                              : ", command " + std::to_string(b.first_end_mismatch) +
                                                    " ends elsewhere")});
-    s.add_row({"bus: HLS face (hls/motion_soc.h) against the RTL",
-               b.hls_mismatch_clock == 0
-                   ? std::string("the same bus and step pins on all ") + std::to_string(b.clocks) +
-                         " clocks"
-                   : "differs at clock " + std::to_string(b.hls_mismatch_clock) + ": " +
-                         b.hls_mismatch_what + " HLS " + std::to_string(b.hls_mismatch_hls) +
-                         " RTL " + std::to_string(b.hls_mismatch_rtl)});
+    s.add_row(
+        {"bus: HLS face (hls/motion_soc.h) against the RTL",
+         b.hls_mismatch_clock == 0
+             ? std::string(
+                   "the same bus pins, step pins and FIFO, time and watchdog counts on all ") +
+                   std::to_string(b.clocks) + " clocks"
+             : "differs at clock " + std::to_string(b.hls_mismatch_clock) + ": " +
+                   b.hls_mismatch_what + " HLS " + std::to_string(b.hls_mismatch_hls) + " RTL " +
+                   std::to_string(b.hls_mismatch_rtl)});
     s.add_row({"bus: end point (lockstep)",
                point(b.end) + " (" + point(b.lockstep_end) + ")" +
                    (b.timed_out ? ", TIMED OUT" : "") +
