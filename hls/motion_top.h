@@ -82,6 +82,8 @@ class MotionTop {
     left_zero_q_ = false;
     feed_q_ = 0;
     hold_q_ = true;
+    pin_q_ = 0;
+    b_pin_q_ = cur_pin_q_ = false;
     done_q_ = false;
     for (int i = 0; i < AXES; ++i) {
       on_x_q_[i] = on_y_q_[i] = false;
@@ -128,7 +130,10 @@ class MotionTop {
     // before they update.
     for (int i = 0; i < AXES; ++i) fire[i] = advance && carry[i];
     out_.clock(in.timing, want, fire);
-    feed_.clock(hold_q_ ? feed_t(0) : (pre_load ? b_.feed : feed_q_), act_q_, stall);
+    // A move whose feed word is 0 runs at the pin's word (a feed profile).
+    const bool pin = pre_load ? b_pin_q_ : cur_pin_q_;
+    feed_.clock(hold_q_ ? feed_t(0) : (pin ? pin_q_ : (pre_load ? b_.feed : feed_q_)), act_q_,
+                stall);
     arc_.clock(load && b_.arc, b_.prep, advance && arc_run);
     for (int i = 0; i < AXES; ++i)
       acc_[i].clock(pre_load, load, load || advance, b_a0_q_, b_.mag[i], b_.dc[i], acc_t(0));
@@ -146,6 +151,7 @@ class MotionTop {
     if (load) {
       arc_q_ = b_.arc;
       feed_q_ = b_.feed;
+      cur_pin_q_ = b_pin_q_;
       const unsigned p = b_.plane.to_uint();
       const int x = p == 0 ? 0 : p == 1 ? 2 : 1, y = p == 0 ? 1 : p == 1 ? 0 : 2;
       for (int i = 0; i < AXES; ++i) {
@@ -155,6 +161,7 @@ class MotionTop {
       }
     }
     hold_q_ = in.feed == 0;
+    pin_q_ = in.feed;
     done_q_ = last;
 
     // Buffer B from buffer A: the masks, a0 and dc.
@@ -163,6 +170,7 @@ class MotionTop {
     if (a_to_b) {
       const DdaMasks<ACC_W> m = dda_norm<ACC_W>(a_any_q_);
       b_ = a_;
+      b_pin_q_ = a_.feed == 0;
       b_low_q_ = a_.arc ? acc_t(0) : m.low;
       b_low_zero_q_ = a_.arc || a_any_q_ == 0;
       // An arc: -N >>> 1 = -ceil(N/2); a line: hm.
@@ -226,6 +234,8 @@ class MotionTop {
   bool left_zero_q_;
   feed_t feed_q_;
   bool hold_q_;
+  feed_t pin_q_;              // feed_i, for the moves whose feed word is 0
+  bool b_pin_q_, cur_pin_q_;  // buffer B's / the running move's feed word is 0
   bool done_q_;
   DdaAxis<ACC_W, false> acc_[AXES];
   Arc arc_;

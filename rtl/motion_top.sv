@@ -22,7 +22,8 @@
 //   cmd_ops_i     the arc's operations N (models::motion_arc_ops), the slaved
 //                 axes' modulus; at least every slaved |delta|
 //   cmd_feed_i    the move's feed word: operations per clock = cmd_feed_i / 2^FEED_W
-//                 (>= 2^FEED_W: one a clock)
+//                 (>= 2^FEED_W: one a clock); 0: the move follows feed_i's word
+//                 (a feed profile drives the pin: rtl/feed_profile.sv)
 // Two buffer entries hold the next commands while one runs, so moves chain
 // without a gap; cmd_ready_o is a register (buffer A empty).
 //
@@ -43,8 +44,9 @@
 // (rtl/feed_accum.sv: sampled a clock ahead, the phase not cleared between
 // moves; the word of the move that runs on the next clock is the one
 // sampled). feed_i, the shared pin, gates it: 0 holds the move (feed hold),
-// any other value runs every move at its own feed word; the gate, like every
-// feed word, applies from the clock after it is sampled.
+// any other value runs every move at its own feed word, and a move whose
+// feed word is 0 at the pin's word; the pin, like every feed word, applies
+// from the clock after it is sampled.
 //
 // Step/dir timing, abort and status as every core (rtl/dda_line.sv): the
 // engine stalls while an axis that must step is not ready; abort_i ends the
@@ -81,7 +83,7 @@ module motion_top #(
   input  logic [OPS_W-1:0]        cmd_ops_i,     // arc operations N (>= 1)
   input  logic [FEED_W:0]         cmd_feed_i,    // the move's operations per clock, / 2^FEED_W
   // Run-time settings
-  input  logic [FEED_W:0]         feed_i,        // 0: feed hold; else the moves run at their feed words
+  input  logic [FEED_W:0]         feed_i,        // 0: feed hold; else the moves run at their feed words (feed word 0: at this one)
   input  logic [TIM_W-1:0]        step_len_i,    // step pulse length, clocks (0 acts as 1)
   input  logic [TIM_W-1:0]        step_space_i,  // min low time between pulses, clocks
   input  logic [TIM_W-1:0]        dir_setup_i,   // dir stable before a step rises, clocks
@@ -191,6 +193,8 @@ module motion_top #(
   logic            pre_load;  // the next add is a load's: buffer B waits and the engine is idle or ends
   logic [FEED_W:0] feed_q, feed_d;  // the running move's feed word
   logic            hold_q, hold_d;  // feed_i was 0
+  logic [FEED_W:0] pin_q, pin_d;    // feed_i, for the moves that follow it
+  logic            b_pin_q, b_pin_d, cur_pin_q, cur_pin_d;  // buffer B's / the running move's feed word is 0
   logic            done_q, done_d;
   logic [AXES-1:0] dda_carry, carry, want_valid, want_dir, ready;
   logic [AXES-1:0] unused_block;  // the stage's block_o (READY_Q = 1 only)
@@ -244,13 +248,17 @@ module motion_top #(
   );
 
   // The feed word of the move on the next clock (pre_load: the next
-  // command's, as it loads if the engine advances), gated by feed_i.
+  // command's, as it loads if the engine advances), gated by feed_i; a move
+  // whose word is 0 takes the pin's.
+  logic [FEED_W:0] accum_feed;
+  assign accum_feed = hold_q ? '0 : (pre_load ? (b_pin_q ? pin_q : b_feed_q)
+                                              : (cur_pin_q ? pin_q : feed_q));
   feed_accum #(
     .FEED_W(FEED_W)
   ) u_feed (
     .clk_i,
     .rst_ni,
-    .feed_i    (hold_q ? '0 : (pre_load ? b_feed_q : feed_q)),
+    .feed_i    (accum_feed),
     .run_i     (act_q),
     .hold_i    (stall),
     .run_next_i(act_d),
@@ -310,19 +318,23 @@ module motion_top #(
       b_feed_d     = a_feed_q;
       b_prep_d     = a_prep_q;
     end
-    arc_d  = arc_q;
-    feed_d = feed_q;
+    b_pin_d = a_to_b ? (a_feed_q == '0) : b_pin_q;
+    arc_d     = arc_q;
+    feed_d    = feed_q;
+    cur_pin_d = cur_pin_q;
     on_x_d = on_x_q;
     on_y_d = on_y_q;
     if (load) begin
-      arc_d  = b_arc_q;
-      feed_d = b_feed_q;
+      arc_d     = b_arc_q;
+      feed_d    = b_feed_q;
+      cur_pin_d = b_pin_q;
       for (int i = 0; i < AXES; i++) begin
         on_x_d[i] = b_arc_q && (i == (b_plane_q == 2'd0 ? 0 : b_plane_q == 2'd1 ? 2 : 1));
         on_y_d[i] = b_arc_q && (i == (b_plane_q == 2'd0 ? 1 : b_plane_q == 2'd1 ? 0 : 2));
       end
     end
     hold_d = feed_i == '0;
+    pin_d  = feed_i;
     done_d = last;
   end
 
@@ -353,6 +365,9 @@ module motion_top #(
       left_zero_q  <= 1'b0;
       feed_q       <= '0;
       hold_q       <= 1'b1;
+      pin_q        <= '0;
+      b_pin_q      <= 1'b0;
+      cur_pin_q    <= 1'b0;
       done_q       <= 1'b0;
     end else begin
       a_valid_q    <= a_valid_d;
@@ -380,6 +395,9 @@ module motion_top #(
       left_zero_q  <= left_zero_d;
       feed_q       <= feed_d;
       hold_q       <= hold_d;
+      pin_q        <= pin_d;
+      b_pin_q      <= b_pin_d;
+      cur_pin_q    <= cur_pin_d;
       done_q       <= done_d;
     end
   end
@@ -519,8 +537,6 @@ module motion_top #(
     .held_i(f_held)
   );
 
-  logic [FEED_W:0] f_feed;  // u_feed's feed_i
-  assign f_feed = hold_q ? '0 : (pre_load ? b_feed_q : feed_q);
   // Progress: while a command runs with full feed (the feed word the feed
   // accumulator samples >= 2^FEED_W on the clock before) and no abort, the
   // engine advances on every clock but one on which an axis its operation steps
@@ -528,7 +544,7 @@ module motion_top #(
   // rtl/formal/stepdir_axis_props.sv proves that ready_o waits for exactly that
   // (never longer; dir_o turns as soon as the hold allows).
   logic f_full_q, f_full_d;
-  assign f_full_d = f_feed[FEED_W];
+  assign f_full_d = accum_feed[FEED_W];
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) f_full_q <= 1'b0;
     else f_full_q <= f_full_d;

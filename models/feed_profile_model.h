@@ -1,0 +1,52 @@
+// The double-precision side of the feed profile (hls/feed_profile.h): the
+// block's registers from a machine's limits, the limits the registers really
+// give, and the time-optimal jerk-limited rest-to-rest move the profile is
+// measured against (the closed form of the 7-phase S-curve, which Ruckig
+// computes too: tests/profile/ compares all three).
+#pragma once
+
+#include <cstdint>
+#include <string>
+
+namespace hwinterp::models {
+
+// Limits along the path, in engine operations (steps) and seconds.
+struct PathLimits {
+  double velocity = 0;  // ops/s
+  double accel = 0;     // ops/s^2
+  double jerk = 0;      // ops/s^3
+};
+
+// The block's build: its widths (hls/feed_profile.h, rtl/feed_profile.sv).
+struct ProfileBuild {
+  int spd_w = 48;  // speed fraction bits
+  int tick_w = 8;  // a tick is 2^tick_w clocks
+  int len_w = 10;  // the moving sum is at most 2^len_w ticks
+  int lvl_w = 16;  // speed level bits
+  double clock_hz = 50e6;
+};
+
+// The registers, and what they give in physical units.
+struct ProfileRegisters {
+  uint64_t q = 0;          // speed quantum, ops/clock * 2^spd_w
+  unsigned len = 1;        // ticks of the moving sum (L)
+  double level_speed = 0;  // ops/s of one level (q * L)
+  double accel = 0;        // ops/s^2 the registers allow (<= the limit)
+  double jerk = 0;         // ops/s^3 the registers allow (<= the limit)
+  uint32_t max_level = 0;  // the highest level within the velocity limit and one op a clock
+};
+
+// Registers within `limits`: L = ceil(A/J) ticks (at most 2^len_w), q the
+// largest quantum with q*L <= A a tick and q <= J a tick^2, both rounded
+// down. Throws std::invalid_argument naming the value when a limit is not
+// positive or the quantum rounds to 0 (the build's speed bits are too few).
+ProfileRegisters profile_registers(const PathLimits& limits, const ProfileBuild& build);
+
+// The level of a speed (ops/s), rounded down, capped at max_level.
+uint32_t profile_level(const ProfileRegisters& regs, double speed);
+
+// The shortest time (s) of a rest-to-rest move of `distance` ops within the
+// limits (the 7-phase S-curve, or fewer phases when a limit is not reached).
+double optimal_move_time(double distance, const PathLimits& limits);
+
+}  // namespace hwinterp::models

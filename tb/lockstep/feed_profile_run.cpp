@@ -1,0 +1,104 @@
+#include "tb/lockstep/feed_profile_run.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "hls/feed_profile.h"
+
+namespace hwinterp::tb {
+namespace {
+
+// The harness's build of the block: 16-bit feed words, 48 speed bits, ticks
+// of 1024 clocks (20.48 us at 50 MHz), moving sums up to 1024 ticks (A/J up
+// to 21 ms at 50 MHz), 16-bit levels, 28-bit moves.
+using Profile = hls::FeedProfile<16, 48, 10, 10, 16, 28>;
+constexpr int kTickClocks = 1024;
+constexpr uint64_t kFull = uint64_t(1) << 16;
+constexpr uint64_t kMaxClocks = uint64_t(1) << 36;
+
+}  // namespace
+
+models::ProfileBuild feed_profile_build(double clock_hz) {
+  models::ProfileBuild b;
+  b.spd_w = 48;
+  b.tick_w = 10;
+  b.len_w = 10;
+  b.lvl_w = 16;
+  b.clock_hz = clock_hz;
+  return b;
+}
+
+ProfileRunResult run_feed_profile(const models::PathLimits& limits, double clock_hz,
+                                  const std::vector<ProfileMove>& moves, bool keep_trace) {
+  ProfileRunResult res;
+  res.regs = models::profile_registers(limits, feed_profile_build(clock_hz));
+  res.tick_seconds = kTickClocks / clock_hz;
+  std::vector<Profile::Command> cmds;
+  std::vector<uint64_t> ends;  // cumulative ops at each move's end
+  uint64_t need = 0;
+  for (size_t i = 0; i < moves.size(); ++i) {
+    const ProfileMove& m = moves[i];
+    if (m.ops < 1 || m.ops >= (uint64_t(1) << 28)) {
+      std::ostringstream os;
+      os << "move " << i + 1 << ": ops " << m.ops << " is outside 1..2^28-1";
+      throw std::invalid_argument(os.str());
+    }
+    Profile::Command c;
+    c.ops = m.ops;
+    c.target =
+        m.target_speed > 0 ? models::profile_level(res.regs, m.target_speed) : res.regs.max_level;
+    c.end = std::min<uint32_t>(c.target.to_uint(), models::profile_level(res.regs, m.end_speed));
+    cmds.push_back(c);
+    need += m.ops;
+    ends.push_back(need);
+  }
+  Profile p;
+  p.reset();
+  size_t sent = 0, done_moves = 0;
+  uint64_t phase = 0;
+  const double to_speed = std::ldexp(clock_hz, -48);  // v -> ops/s
+  double v1 = 0, v2 = 0;
+  int seen = 0;
+  for (uint64_t clk = 0; clk < kMaxClocks; ++clk) {
+    if (clk % kTickClocks == 0) {
+      const double v = static_cast<double>(p.state().v) * to_speed;
+      if (keep_trace) res.tick_speed.push_back(v);
+      res.peak_speed = std::max(res.peak_speed, v);
+      if (seen >= 1) res.peak_accel = std::max(res.peak_accel, std::abs(v - v1) / res.tick_seconds);
+      if (seen >= 2)
+        res.peak_jerk = std::max(res.peak_jerk,
+                                 std::abs(v - 2 * v1 + v2) / (res.tick_seconds * res.tick_seconds));
+      v2 = v1;
+      v1 = v;
+      ++seen;
+    }
+    phase += std::min(p.feed(), kFull);
+    while (phase >= kFull && res.ops < need) {
+      phase -= kFull;
+      ++res.ops;
+      while (done_moves < ends.size() && res.ops == ends[done_moves]) {
+        res.move_end_clock.push_back(clk + 1);
+        res.move_end_speed.push_back(static_cast<double>(p.state().v) * to_speed);
+        ++done_moves;
+      }
+    }
+    if (phase >= kFull) phase &= kFull - 1;  // carries past the stream's end are not taken
+    if (res.ops == need && res.rest_clock == 0 && p.state().v == 0) res.rest_clock = clk;
+    const bool valid = sent < cmds.size();
+    const bool take = valid && p.cmd_ready();
+    p.clock(valid, valid ? cmds[sent] : Profile::Command{}, false, res.regs.q, res.regs.len);
+    if (take) ++sent;
+    if (res.rest_clock != 0 && !p.busy()) break;
+  }
+  if (res.rest_clock == 0) {
+    std::ostringstream os;
+    os << "the profile did not finish within 2^36 clocks (" << res.ops << " of " << need
+       << " ops taken)";
+    throw std::runtime_error(os.str());
+  }
+  return res;
+}
+
+}  // namespace hwinterp::tb
