@@ -5,8 +5,9 @@ address decode, the field logic and the readback), for the HLS face of a SoC
 (hls/) and a testbench's bus master. tests/hls/soc_regs_model_test.cpp checks
 it against the description (reset values, access rights, error responses,
 write-1-to-clear, single pulses, swmod and swacc strobes, sticky events, and
-20000 random requests); it is not yet compared clock for clock with the
-generated SystemVerilog.
+20000 random requests); behind hls/motion_soc.h it is compared clock for
+clock with the generated SystemVerilog in `hwinterp gcode --bus`
+(tb/bus/hls_shadow.h: every bus response and the SoC's pins).
 
     CppModelExporter().export(top_addrmap_node, "hls/gen/x.h", namespace="...")
 

@@ -50,6 +50,14 @@ int run_gcode(int argc, char** argv, int first) {
               "machine description, JSON (tb/gcode/machine.h; default 1000 steps/mm, 50 MHz)")
       .option("variant", "NAME", "motion_top variant (default: the first with the machine's axes)")
       .option("mode", "systemc|direct", "lockstep mode", "systemc")
+      .option("bus", "axi4lite|wishbone",
+              "then run the program again through motion_soc's register interface (a bus "
+              "master writing each command into its FIFO) and require the lockstep run's "
+              "lattice points and end points (docs/soc.md)")
+      .option("bus-waits", "N",
+              "with --bus: random wait states, 0..N clocks, on the master's "
+              "valid and ready signals",
+              "0")
       .option("feed", "full|programmed",
               "full: every move at full feed (the lattice points are the same; machining time "
               "computed from the feed words); programmed: simulate the programmed feeds",
@@ -84,6 +92,10 @@ int run_gcode(int argc, char** argv, int first) {
   setup.canon = args.given("canon");
   if (setup.canon) setup.program = args.str("canon");
   setup.mode = args.choice("mode", {"systemc", "direct"});
+  if (args.given("bus")) setup.bus = args.choice("bus", {"axi4lite", "wishbone"});
+  setup.bus_waits = static_cast<uint32_t>(args.integer("bus-waits", 0, 64));
+  if (args.given("bus-waits") && setup.bus.empty())
+    throw UsageError("--bus-waits: give --bus axi4lite or --bus wishbone with it");
   setup.feed_mode = args.choice("feed", {"full", "programmed"}) == "full"
                         ? gcode::FeedMode::kFull
                         : gcode::FeedMode::kProgrammed;
@@ -91,6 +103,10 @@ int run_gcode(int argc, char** argv, int first) {
   if (args.given("profile"))
     setup.machine.profile = gcode::parse_profile(args.str("profile"), "--profile");
   setup.profile_window = static_cast<size_t>(args.integer("profile-window", 1, 4096));
+  if (!setup.bus.empty() && setup.machine.profile != gcode::ProfileKind::kOff)
+    throw UsageError(std::string("--bus ") + setup.bus + ": motion_soc has no feed profile yet; " +
+                     "run it with --profile off (the machine's profile is " +
+                     gcode::profile_name(setup.machine.profile) + ")");
   if (args.given("variant")) setup.variant = args.str("variant");
   gcode::part_program_variant(setup);  // a bad --variant stops here
 
@@ -115,6 +131,10 @@ int run_gcode(int argc, char** argv, int first) {
   bool ok = run.passed;
   std::cout << tb::case_table(run.results) << tb::failure_details(run.results)
             << gcode::summary_table(setup, run);
+  if (run.bus.ran && !run.bus.passed)
+    std::cout << "FAIL: the " << run.bus.bus
+              << " run did not meet the lockstep run (lattice points, end points, lost or "
+                 "refused commands, bus errors: see the bus rows)\n";
   if (!run.end_mismatches.empty())
     std::cout << "FAIL: " << run.end_mismatches.size()
               << " moves ended off their rounded programmed end (first: move "

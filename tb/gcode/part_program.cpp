@@ -12,7 +12,14 @@
 #include <memory>
 #include <optional>
 
+// The Verilated root headers (for motion_top's done_o) trip -Wunused-parameter
+// in Verilator 5.006's own verilated_types.h.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-parameter"
+#include "hwinterp_soc.h"
+#pragma GCC diagnostic pop
 #include "tb/base/text_table.h"
+#include "tb/bus/soc_run.h"
 #include "tb/cores/motion_top/motion_top_adapter.h"
 #include "tb/gcode/contour.h"
 #include "tb/gcode/limits.h"
@@ -86,6 +93,13 @@ class Program final : public tb::ItemSource<MotionAdapter>, public tb::MoveObser
   // tb::ItemSource: the next command of the program.
   bool next(tb::Item<MotionAdapter>& it) override {
     models::MotionCommand c;
+    if (!next(c)) return false;
+    if (profiled_) c.feed = 0;  // the move follows feed_i: the profile's word
+    it = tb::command_item<MotionAdapter>(c);
+    return true;
+  }
+  // The next command of the program (the bus run's source).
+  bool next(models::MotionCommand& c) {
     if (!compiler_.next(c)) {
       flush_rows();
       return false;
@@ -96,8 +110,6 @@ class Program final : public tb::ItemSource<MotionAdapter>, public tb::MoveObser
       path_move_ = info.move_index;
     }
     pending_.push_back({commands_++, info.move_index, info.line, path_});
-    if (profiled_) c.feed = 0;  // the move follows feed_i: the profile's word
-    it = tb::command_item<MotionAdapter>(c);
     flush_rows();
     return true;
   }
@@ -297,6 +309,133 @@ Kinematics kinematics_of(const tb::KinematicsMonitor& k, const Machine& m) {
   return out;
 }
 
+// The lockstep run's step events for the bus run to meet, passed on to the
+// program's own observer.
+class Recorder final : public tb::MoveObserver {
+ public:
+  Recorder(tb::MoveObserver& inner, tb::bus::LatticeRecord& record)
+      : inner_(inner), record_(record) {}
+  void move(const models::LatticePoint& at, uint64_t command) override { inner_.move(at, command); }
+  void done(uint64_t command, const models::LatticePoint& at) override {
+    record_.done();
+    inner_.done(command, at);
+  }
+  void pulses(uint64_t clock, uint32_t rising, uint32_t dir) override {
+    record_.pulses(rising, dir);
+    inner_.pulses(clock, rising, dir);
+  }
+
+ private:
+  tb::MoveObserver& inner_;
+  tb::bus::LatticeRecord& record_;
+};
+
+// The bus run's sink: the check against the lockstep run's record, and a
+// second Program's contour error and end points.
+struct BusSink {
+  Program& prog;
+  tb::bus::LatticeCheck& check;
+  void pulses(uint64_t clock, uint32_t rising, uint32_t dir) {
+    check.pulses(rising, dir);
+    prog.pulses(clock, rising, dir);
+  }
+  void move(const models::LatticePoint& at, uint64_t command) { prog.move(at, command); }
+  void done(uint64_t command, const models::LatticePoint& at) {
+    check.done(command);
+    prog.done(command, at);
+  }
+};
+
+template <class Cfg>
+tb::bus::SocRunResult run_soc_of(const std::string& bus, Program& src, BusSink& sink,
+                                 const tb::bus::SocSetup& s, const tb::bus::WaitStates& w,
+                                 uint64_t drain, uint64_t max_clocks) {
+  using Soc = SocOf<Cfg>;
+  if (bus == "axi4lite") {
+    tb::bus::AxilShadow<Cfg> hls;
+    return tb::bus::run_soc<typename Soc::Axil, tb::bus::Axi4LiteMaster, Soc>(src, s, sink, hls, w,
+                                                                              drain, max_clocks);
+  }
+  tb::bus::WbShadow<Cfg> hls;
+  return tb::bus::run_soc<typename Soc::Wb, tb::bus::WishboneMaster, Soc>(src, s, sink, hls, w,
+                                                                          drain, max_clocks);
+}
+
+// The program again, through motion_soc's bus, against the lockstep run.
+BusCompare run_bus(const PartProgramSetup& setup, const tb::VariantSpec& l,
+                   const MotionWidths& widths, const tb::bus::LatticeRecord& record,
+                   const models::LatticePoint& lockstep_end, uint64_t lockstep_clocks) {
+  auto prog = std::make_shared<Program>(open_source(setup), setup.machine, widths, setup.feed_mode,
+                                        setup.program, nullptr, nullptr, nullptr,
+                                        setup.kinematics_window_s);
+  tb::bus::LatticeCheck check(record);
+  BusSink sink{*prog, check};
+  tb::bus::SocSetup s;
+  s.axes = l.axes;
+  s.feed = static_cast<uint32_t>(l.full_feed());
+  const StepTiming& t = setup.machine.timing;
+  s.step_len = static_cast<uint32_t>(t.step_len);
+  s.step_space = static_cast<uint32_t>(t.step_space);
+  s.dir_setup = static_cast<uint32_t>(t.dir_setup);
+  s.dir_hold = static_cast<uint32_t>(t.dir_hold);
+  const tb::bus::WaitStates waits{setup.bus_waits, 1};
+  // No step for this long after the last completed command: the end (every
+  // step/dir timing twice, and some).
+  const uint64_t drain = 2 * (s.step_len + s.step_space + s.dir_setup + s.dir_hold) + 64;
+  // The bus adds clocks per command (about 3 per write on AXI4-Lite); a run
+  // past this has stalled.
+  const uint64_t max_clocks =
+      4 * lockstep_clocks +
+      64 * (record.done_at().size() + 1) * (16 + 4 * uint64_t{setup.bus_waits}) + 100000;
+  tb::bus::SocRunResult r;
+  bool found = false;
+#define HWINTERP_RUN_SOC(v)                                                       \
+  if (!found && l.variant == #v) {                                                \
+    r = run_soc_of<v##_cfg>(setup.bus, *prog, sink, s, waits, drain, max_clocks); \
+    found = true;                                                                 \
+  }
+  HWINTERP_SOC_VARIANTS(HWINTERP_RUN_SOC)
+#undef HWINTERP_RUN_SOC
+  if (!found) throw cli::UsageError("--bus: no motion_soc build of variant " + l.variant);
+  prog->flush_rows();
+
+  BusCompare b;
+  b.ran = true;
+  b.bus = setup.bus;
+  b.build = std::string(setup.bus == "axi4lite" ? "motion_soc_axil" : "motion_soc_wb") + " at " +
+            l.variant + "'s widths, FIFO_DEPTH 16";
+  b.clocks = r.clocks;
+  b.writes = r.host.writes;
+  b.reads = r.host.reads;
+  b.errors = r.host.errors;
+  b.pushes = r.host.pushes;
+  b.level_reads = r.host.level_reads;
+  b.credit_waits = r.host.credit_waits;
+  b.irq_wait_clocks = r.host.irq_clocks;
+  b.events = r.host.events;
+  b.points = check.points();
+  b.lockstep_points = record.events().size();
+  b.completed = r.completed;
+  b.lockstep_completed = record.done_at().size();
+  b.first_point_mismatch = check.first_point();
+  b.first_end_mismatch = check.first_end();
+  b.end = r.end;
+  b.lockstep_end = lockstep_end;
+  b.end_mismatches = prog->end_mismatches();
+  b.contour = prog->max();
+  b.timed_out = r.timed_out;
+  b.hls_mismatch_clock = r.shadow.clock;
+  b.hls_mismatch_what = r.shadow.what;
+  b.hls_mismatch_hls = r.shadow.hls;
+  b.hls_mismatch_rtl = r.shadow.rtl;
+  // EVENTS: an overflow or a refused push would be a lost command.
+  b.passed = check.same() && !r.timed_out && r.shadow.clock == 0 && r.host.errors == 0 &&
+             r.host.events_read && (r.host.events & tb::bus::kLost) == 0 &&
+             r.completed == r.host.pushes && r.host.pushes == prog->compiler().totals().commands &&
+             b.end == b.lockstep_end && b.end_mismatches.empty() && prog->all_rows_written();
+  return b;
+}
+
 }  // namespace
 
 tb::VariantSpec part_program_variant(const PartProgramSetup& setup) {
@@ -376,6 +515,12 @@ PartProgramRun run_part_program(const PartProgramSetup& setup) {
   options.mode = setup.mode;
   options.observer = prog.get();
   options.profile_feed = profile_feed.get();
+  tb::bus::LatticeRecord record;
+  std::unique_ptr<Recorder> recorder;
+  if (!setup.bus.empty()) {
+    recorder = std::make_unique<Recorder>(*prog, record);
+    options.observer = recorder.get();
+  }
   std::vector<tb::Case<MotionAdapter>> cases;
   cases.push_back(std::move(c));
   const std::unique_ptr<tb::BenchRun> run = chosen.variant().make(l, std::move(cases), options);
@@ -431,6 +576,13 @@ PartProgramRun run_part_program(const PartProgramSetup& setup) {
   }
   r.passed = tb::all_passed(r.results) && !r.results.empty() && r.results.front().completed &&
              r.end_mismatches.empty() && r.all_rows_written && r.profile_failures.empty();
+  if (!setup.bus.empty()) {
+    std::cout << "hwinterp gcode: " << setup.program << " through motion_soc's " << setup.bus
+              << " interface\n"
+              << std::flush;
+    r.bus = run_bus(setup, l, widths, record, r.results.front().end_position, run->cycles());
+    r.passed = r.passed && r.bus.passed;
+  }
   return r;
 }
 
@@ -480,6 +632,44 @@ std::string summary_table(const PartProgramSetup& setup, const PartProgramRun& r
                                       " steps (move " + std::to_string(m.move) + ", line " +
                                       std::to_string(m.line) + ")"});
   s.add_row({"visited lattice points", std::to_string(run.visited_points)});
+  if (run.bus.ran) {
+    const BusCompare& b = run.bus;
+    auto point = [](const std::vector<int64_t>& p) {
+      std::string t;
+      for (size_t i = 0; i < p.size(); ++i) t += (i ? " " : "") + std::to_string(p[i]);
+      return t;
+    };
+    s.add_row({"bus: " + b.bus + " (" + b.build + ")",
+               std::to_string(b.clocks) + " clocks, " + std::to_string(b.writes) + " writes, " +
+                   std::to_string(b.reads) + " reads, " + std::to_string(b.errors) + " errors"});
+    s.add_row({"bus: commands pushed / completed (lockstep)",
+               std::to_string(b.pushes) + " / " + std::to_string(b.completed) + " (" +
+                   std::to_string(b.lockstep_completed) + "), FIFO full at " +
+                   std::to_string(b.credit_waits) + " of " + std::to_string(b.level_reads) +
+                   " level reads, " + std::to_string(b.irq_wait_clocks) +
+                   " clocks asleep on low water"});
+    s.add_row({"bus: lattice points (lockstep)",
+               std::to_string(b.points) + " (" + std::to_string(b.lockstep_points) + "), " +
+                   (b.first_point_mismatch < 0
+                        ? std::string("the same sequence")
+                        : "first difference at point " + std::to_string(b.first_point_mismatch)) +
+                   (b.first_end_mismatch < 0 ? std::string(", every command ends on the same point")
+                                             : ", command " + std::to_string(b.first_end_mismatch) +
+                                                   " ends elsewhere")});
+    s.add_row(
+        {"bus: HLS face (hls/motion_soc.h) against the RTL",
+         b.hls_mismatch_clock == 0
+             ? std::string(
+                   "the same bus pins, step pins and FIFO, time and watchdog counts on all ") +
+                   std::to_string(b.clocks) + " clocks"
+             : "differs at clock " + std::to_string(b.hls_mismatch_clock) + ": " +
+                   b.hls_mismatch_what + " HLS " + std::to_string(b.hls_mismatch_hls) + " RTL " +
+                   std::to_string(b.hls_mismatch_rtl)});
+    s.add_row({"bus: end point (lockstep)",
+               point(b.end) + " (" + point(b.lockstep_end) + ")" +
+                   (b.timed_out ? ", TIMED OUT" : "") +
+                   ((b.events & tb::bus::kLost) ? ", EVENTS overflow/refused set" : "")});
+  }
   const Kinematics& k = run.kinematics;
   for (const KinematicRow& row : k.rows) {
     auto cell = [&](const KinematicPeak& p, const char* per) {
@@ -567,6 +757,40 @@ Json report_json(const PartProgramSetup& setup, const PartProgramRun& run) {
     prof["failures"] = run.profile_failures;
   }
   report["profile"] = prof;
+  if (run.bus.ran) {
+    const BusCompare& b = run.bus;
+    Json j;
+    j["bus"] = b.bus;
+    j["build"] = b.build;
+    j["clocks"] = b.clocks;
+    j["writes"] = b.writes;
+    j["reads"] = b.reads;
+    j["errors"] = b.errors;
+    j["pushes"] = b.pushes;
+    j["level_reads"] = b.level_reads;
+    j["fifo_full_reads"] = b.credit_waits;
+    j["irq_wait_clocks"] = b.irq_wait_clocks;
+    j["events"] = b.events;
+    j["points"] = b.points;
+    j["lockstep_points"] = b.lockstep_points;
+    j["completed"] = b.completed;
+    j["lockstep_completed"] = b.lockstep_completed;
+    j["first_point_mismatch"] = b.first_point_mismatch;
+    j["first_end_mismatch"] = b.first_end_mismatch;
+    j["end"] = b.end;
+    j["lockstep_end"] = b.lockstep_end;
+    j["end_mismatches"] = b.end_mismatches.size();
+    j["max_contour_error_mm"] = b.contour.mm;
+    j["timed_out"] = b.timed_out;
+    j["hls_mismatch_clock"] = b.hls_mismatch_clock;
+    if (b.hls_mismatch_clock != 0) {
+      j["hls_mismatch"] = {{"signal", b.hls_mismatch_what},
+                           {"hls", b.hls_mismatch_hls},
+                           {"rtl", b.hls_mismatch_rtl}};
+    }
+    j["passed"] = b.passed;
+    report["bus"] = j;
+  }
   return report;
 }
 

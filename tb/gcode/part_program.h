@@ -46,6 +46,10 @@ struct PartProgramSetup {
   std::ostream* kinematics_csv = nullptr;  // one row per estimator window; null: none
   double kinematics_window_s = 0.01;  // the kinematics estimator's window (tb/monitor/kinematics.h)
   size_t profile_window = 16;  // commands the profile planner looks ahead (machine.profile on)
+  // After the lockstep run, the same program through motion_soc's register
+  // interface (tb/bus/): "axi4lite" or "wishbone"; empty: not.
+  std::string bus;
+  uint32_t bus_waits = 0;  // the bus master's random wait states, 0..N clocks each
 };
 
 // The feed profile of a run (machine.profile not off): its registers, the
@@ -89,6 +93,32 @@ struct ContourMax {
   uint64_t move = 0, line = 0;
 };
 
+// The bus run (PartProgramSetup::bus) against the lockstep run.
+struct BusCompare {
+  bool ran = false;
+  std::string bus;      // axi4lite or wishbone
+  std::string build;    // the Verilated top and its widths
+  uint64_t clocks = 0;  // clock edges after reset
+  uint64_t writes = 0, reads = 0, errors = 0;
+  uint64_t pushes = 0, level_reads = 0, credit_waits = 0;
+  uint64_t irq_wait_clocks = 0;                    // the host asleep on the low-water interrupt
+  uint32_t events = 0;                             // EVENTS at the end
+  uint64_t points = 0, lockstep_points = 0;        // visited lattice points
+  uint64_t completed = 0, lockstep_completed = 0;  // commands completed (done_o)
+  int64_t first_point_mismatch = -1;               // the first point that differs; -1: none
+  int64_t first_end_mismatch = -1;         // the first command that ended elsewhere; -1: none
+  std::vector<int64_t> end, lockstep_end;  // the axes at the end
+  std::vector<uint64_t> end_mismatches;    // moves off their rounded programmed end (bus run)
+  ContourMax contour;                      // the bus run's own
+  bool timed_out = false;
+  // The HLS face (hls/motion_soc.h) against the Verilated top, every clock
+  // (tb/bus/hls_shadow.h): the first difference; clock 0: none.
+  uint64_t hls_mismatch_clock = 0;
+  std::string hls_mismatch_what;
+  uint64_t hls_mismatch_hls = 0, hls_mismatch_rtl = 0;
+  bool passed = false;
+};
+
 // What the run gave.
 struct PartProgramRun {
   tb::VariantSpec variant;
@@ -104,7 +134,9 @@ struct PartProgramRun {
   // With a profile: the profile's faces disagreed, or the step stream broke a
   // machine limit beyond the estimator's tolerance (each names which).
   std::vector<std::string> profile_failures;
-  bool passed = false;  // lockstep, model, timing, end points: everything held
+  BusCompare bus;  // when PartProgramSetup::bus is set
+  // lockstep, model, timing, end points, the profile (and the bus run): everything held
+  bool passed = false;
 };
 
 // The variant it will run on (named, or the first with the machine's axes);

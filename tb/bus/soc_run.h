@@ -1,0 +1,170 @@
+// motion_soc through its bus in the direct (plain C++) loop: a `verilator
+// --cc` model of rtl/motion_soc_axil.sv or rtl/motion_soc_wb.sv, a bus
+// master (tb/bus/bus_master.h) and the host's transactions (tb/bus/soc_host.h)
+// clocked together, one clock edge per iteration, and the step outputs
+// (step/dir: out_a_o, out_b_o) followed on every clock.
+//
+// The run tells a sink, as the lockstep bench tells its MoveObserver, every
+// clock with a rising step (pulses(clock, rising, dir), then move(at,
+// command)) and every completed command (done(command, at)), the command
+// being the count of done_o pulses before it (motion_top's done_o, read
+// through tb/bus/motion_soc_probe.vlt). LatticeRecord keeps a run's step
+// events and LatticeCheck compares another run with them as it goes: the
+// same steps, in the same groups and order, and every command ending after
+// the same step.
+#pragma once
+
+#include <verilated.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "models/lattice_path.h"
+#include "tb/bus/bus_master.h"
+#include "tb/bus/hls_shadow.h"
+#include "tb/bus/soc_host.h"
+
+namespace hwinterp::tb::bus {
+
+// A run's step events: one per clock with a rising step (the rising axes in
+// bits 0..7, their directions, 1 = negative, in bits 8..15), and per
+// completed command the number of events before its done_o. Two bytes per
+// visited lattice point.
+class LatticeRecord {
+ public:
+  void pulses(uint32_t rising, uint32_t dir) {
+    events_.push_back(static_cast<uint16_t>((rising & 0xFFu) | ((dir & rising & 0xFFu) << 8)));
+  }
+  void done() { done_at_.push_back(events_.size()); }
+  const std::vector<uint16_t>& events() const { return events_; }
+  const std::vector<uint64_t>& done_at() const { return done_at_; }
+
+ private:
+  std::vector<uint16_t> events_;
+  std::vector<uint64_t> done_at_;
+};
+
+// Another run against a record, step event by step event.
+class LatticeCheck {
+ public:
+  explicit LatticeCheck(const LatticeRecord& r) : ref_(r) {}
+  void pulses(uint32_t rising, uint32_t dir) {
+    const uint16_t e = static_cast<uint16_t>((rising & 0xFFu) | ((dir & rising & 0xFFu) << 8));
+    if (first_point_ < 0 &&
+        (points_ >= ref_.events().size() || ref_.events()[static_cast<size_t>(points_)] != e))
+      first_point_ = static_cast<int64_t>(points_);
+    ++points_;
+  }
+  void done(uint64_t command) {
+    if (first_end_ < 0 && (command >= ref_.done_at().size() ||
+                           ref_.done_at()[static_cast<size_t>(command)] != points_))
+      first_end_ = static_cast<int64_t>(command);
+    ++dones_;
+  }
+  uint64_t points() const { return points_; }
+  uint64_t dones() const { return dones_; }
+  // The first point (0-based) that differs, or -1; a shorter run differs at
+  // its length.
+  int64_t first_point() const {
+    if (first_point_ < 0 && points_ != ref_.events().size())
+      return static_cast<int64_t>(std::min<uint64_t>(points_, ref_.events().size()));
+    return first_point_;
+  }
+  // The first command that ended after a different step, or -1.
+  int64_t first_end() const {
+    if (first_end_ < 0 && dones_ != ref_.done_at().size())
+      return static_cast<int64_t>(std::min<uint64_t>(dones_, ref_.done_at().size()));
+    return first_end_;
+  }
+  bool same() const { return first_point() < 0 && first_end() < 0; }
+
+ private:
+  const LatticeRecord& ref_;
+  uint64_t points_ = 0, dones_ = 0;
+  int64_t first_point_ = -1, first_end_ = -1;
+};
+
+struct SocRunResult {
+  uint64_t clocks = 0;     // clock edges after reset
+  uint64_t completed = 0;  // done_o pulses
+  HostCounts host;
+  models::LatticePoint end;  // the axes at the end (from the origin)
+  bool timed_out = false;    // max_clocks passed first
+  ShadowMismatch shadow;     // the HLS face's first difference (clock 0: none)
+};
+
+// Runs the host's program through `Model` (a Verilated motion_soc top) with
+// master `Master<Model>`; Probe::done(model) reads motion_top's done_o.
+// `shadow` (tb/bus/hls_shadow.h: the HLS face, or NoShadow) takes the same
+// pins on every clock and is compared with the model. The run ends when the
+// host is done, every push completed and `drain` clocks passed with no step;
+// at the HLS face's first difference; or after max_clocks.
+template <class Model, template <class> class Master, class Probe, class Src, class Sink,
+          class Shadow>
+SocRunResult run_soc(Src& src, const SocSetup& setup, Sink& sink, Shadow& shadow,
+                     const WaitStates& waits, uint64_t drain, uint64_t max_clocks) {
+  struct RestoreThreadContext {
+    ~RestoreThreadContext() { Verilated::threadContextp(Verilated::defaultContextp()); }
+  } restore;
+  VerilatedContext context;
+  Model m(&context);
+  Master<Model> master(waits);
+  SocHost<Src> host(src, setup);
+  SocRunResult r;
+  r.end.assign(static_cast<size_t>(setup.axes), 0);
+  // Reset: two clocks with rst_ni low, the bus idle.
+  master.drive(m);
+  m.probe_i = 0;
+  m.estop_i = 0;
+  m.rst_ni = 0;
+  for (int i = 0; i < 2; ++i) {
+    m.clk_i = 0;
+    m.eval();
+    shadow.before_edge(m);
+    m.clk_i = 1;
+    m.eval();
+  }
+  m.rst_ni = 1;
+  const uint32_t mask = (1u << setup.axes) - 1;
+  uint32_t prev_step = 0;
+  uint64_t quiet = 0;
+  BusTxn t;
+  BusRsp rsp;
+  while (r.clocks < max_clocks) {
+    if (master.idle() && host.next(t, m.irq_o)) master.issue(t);
+    master.drive(m);
+    m.clk_i = 0;
+    m.eval();
+    master.sample(m);
+    shadow.before_edge(m);
+    m.clk_i = 1;
+    m.eval();
+    ++r.clocks;
+    const bool done = Probe::done(m);
+    shadow.after_edge(m, done, r.clocks);
+    if (shadow.failed()) break;
+    if (master.take(rsp)) host.response(rsp);
+    const uint32_t step = m.out_a_o & mask, dir = m.out_b_o & mask;
+    const uint32_t rising = step & ~prev_step;
+    prev_step = step;
+    if (rising) {
+      for (int i = 0; i < setup.axes; ++i)
+        if (rising >> i & 1) r.end[static_cast<size_t>(i)] += (dir >> i & 1) ? -1 : 1;
+      sink.pulses(r.clocks, rising, dir);
+      sink.move(r.end, r.completed);
+      quiet = 0;
+    } else {
+      ++quiet;
+    }
+    if (done) sink.done(r.completed++, r.end);
+    if (host.finished() && r.completed >= host.counts().pushes && quiet >= drain) break;
+  }
+  r.timed_out = r.clocks >= max_clocks;
+  r.shadow = shadow.mismatch();
+  r.host = host.counts();
+  m.final();
+  return r;
+}
+
+}  // namespace hwinterp::tb::bus
