@@ -354,6 +354,7 @@ module fixed_ratio #(
     // -M as that register says (no choice after the carry chain).
     logic [ACC_W-1:0] s_q, s_d;  // rem - M; |delta_i| after divider clock 2
     logic             s_neg;  // s < 0: the quotient bit of this remainder is 0
+    logic             zap_q, zap_d;  // divider clock 3 of a maximal axis: its remainder is 0
     logic [ACC_W-1:0] op_a, op_b;  // the step's operands: 2 s + the dividend bit, and -M or +M
     logic             op_c;  // its carry in (-M = ~M + 1)
     /* verilator lint_off UNUSEDSIGNAL */
@@ -392,22 +393,23 @@ module fixed_ratio #(
     // the next s is 2 (rem - M [bit]) + b - M = 2 s + b - M (bit 1) or
     // 2 s + b + M (bit 0): an add of registers, its operands chosen in front
     // of the carry chain by registers only. Divider clock 2 loads s with
-    // |delta_i| (op_a = |delta_i|, op_b = 0): rem after the integer step of
-    // a non-major axis (its integer bit is 0: |delta_i| < M); clock 3's step
-    // (s >= 0: -M) then gives s = 2 |delta_i| - M. The bit of the s each
-    // clock starts with goes into quot_q (clocks 4 .. FRAC_W + 2: the
-    // fraction bits but the last), the last is the sign of the final s. A
-    // major axis's R is 2^FRAC_W (|delta_i| = M), set at the load; its
-    // divider runs on values that are not used. (In clock 1, too, the step's
-    // result is not used.)
+    // |delta_i| (op_a = |delta_i|, op_b = 0), rem after the integer step
+    // (rem = |delta_i| - M bit; M is not yet in max_n_q); clock 3's step
+    // (s >= 0: -M; for |delta_i| = M = 2^(ACC_W-1), +M, the same modulo
+    // 2^ACC_W) then gives s = 2 rem - M, with rem = 0 for a maximal axis
+    // (zap_q: op_a = 0, the integer bit 1). The bit of the s each clock
+    // starts with goes into quot_q (clocks 4 .. FRAC_W + 2: the fraction bits
+    // but the last), the last is the sign of the final s; the integer bit is
+    // is_max. (In clock 1 the step's result is not used.)
     assign s_neg = s_q[ACC_W-1];
-    assign op_a  = ph_q[1] ? buf_mag_q : {s_q[ACC_W-2:0], low_q[FRAC_W-1]};
+    assign zap_d = ph_q[1] && is_max[i];
+    assign op_a  = ph_q[1] ? buf_mag_q : zap_q ? '0 : {s_q[ACC_W-2:0], low_q[FRAC_W-1]};
     assign op_b  = ph_q[1] ? '0 : (max_n_q ^ {ACC_W{s_neg}});  // s < 0: +M = ~max_n_q
     assign op_c  = !ph_q[1] && !s_neg;
     assign step  = {op_a, 1'b1} + {op_b, op_c};
     assign s_d   = div_run ? step[ACC_W:1] : s_q;
     assign quot_d = div_run ? {quot_q[FRAC_W-3:0], !s_neg} : quot_q;
-    assign rate_load = is_max[i] ? {1'b1, {FRAC_W{1'b0}}} : {1'b0, quot_q, !s_neg};
+    assign rate_load = {is_max[i], quot_q, !s_neg};
 
     // Engine: a tick adds R to the phase; the carry out is a step.
     assign carry[i] = car_q;
@@ -462,6 +464,7 @@ module fixed_ratio #(
         left_q    <= 1'b0;
         one_q     <= 1'b0;
         s_q       <= '0;
+        zap_q     <= 1'b0;
         quot_q    <= '0;
         rate_q    <= '0;
         car_q     <= 1'b0;
@@ -477,6 +480,7 @@ module fixed_ratio #(
         left_q    <= left_d;
         one_q     <= one_d;
         s_q       <= s_d;
+        zap_q     <= zap_d;
         quot_q    <= quot_d;
         rate_q    <= rate_d;
         car_q     <= car_d;
