@@ -300,7 +300,9 @@ module fixed_ratio #(
     div_left_d  = div_left_q;
     if (div_run) div_left_d = div_left_q - DivW'(1);
     if (cmd_take) div_left_d = cmd_zero ? '0 : DivClocks;
-    div_done_d = div_left_d == '0;
+    // div_left_d == 0, as a choice of registers and the take: no compare
+    // after the take's choice (ECP5: in_q -> div_done_q was 3-5 LUT + 1-3 mux).
+    div_done_d = cmd_take ? cmd_zero : div_run ? (div_left_q == DivW'(1)) : div_done_q;
     done_d     = last;
   end
 
