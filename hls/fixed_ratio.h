@@ -113,8 +113,8 @@ class FixedRatio {
     // rtl/fixed_ratio.sv); both are "the command's tick max(M, 1)".
     const bool last = advance && all_fin;
     const bool div_run = buf_valid_q_ && div_left_q_ != 0;
-    // Ready now, or with this clock's quotient bit (the last divider clock).
-    const bool buf_ready = buf_valid_q_ && div_left_q_ <= 1;
+    // Ready once the division is done (the clock after its last clock).
+    const bool buf_ready = buf_valid_q_ && div_left_q_ == 0;
     const bool buf_take = buf_ready && (!act_q_ || last) && !in.abort;
     const bool cmd_take = in.cmd_valid && !buf_valid_q_;
 
@@ -126,8 +126,11 @@ class FixedRatio {
     // Buffer: one divider clock (rtl/fixed_ratio.sv): 1. every pair of
     // magnitudes compared; 2. M and the integer bits (|delta_i| = M: rem
     // becomes 0 or 2 |delta_i|); 3.. one restoring-division step, the
-    // dividend's next low bit (of M - 1) shifted in. quot is the quotient
-    // with this clock's bit: in the last clock, the rate word
+    // dividend's next low bit (of M - 1) shifted in (the RTL divides
+    // non-restoring: the same quotient bits, its remainder minus M kept,
+    // each bit a clock later, the last one the final remainder's sign; a
+    // maximal axis's R set to 2^FRAC_W at the load). quot is the quotient
+    // with this clock's bit: after the last clock, the rate word
     // ceil(|delta_i| 2^FRAC_W / M).
     rate_t quot[AXES];
     for (int i = 0; i < AXES; ++i) quot[i] = quot_q_[i];
@@ -170,7 +173,7 @@ class FixedRatio {
     ph_q_[0] = cmd_take && !in.abort && !take_zero;
 
     // Engine registers: the phase kept as phase + R (its carry is the next
-    // tick's step).
+    // tick's step; the RTL keeps that carry and the tick after's phase + R).
     for (int i = 0; i < AXES; ++i) {
       if (buf_take) {
         rate_q_[i] = quot[i];

@@ -14,21 +14,26 @@
 // maximum) the rate word of axis i is
 //     R_i = ceil(|delta_i| 2^FRAC_W / M)
 // (a fixed-point fraction with FRAC_W fraction bits; the major axis gets
-// exactly 1.0 = 2^FRAC_W). One restoring divider per axis, all in parallel,
-// FRAC_W + 2 clocks:
+// exactly 1.0 = 2^FRAC_W). One divider per axis, all in parallel, FRAC_W + 2
+// clocks:
 //   1. M: every pair of magnitudes compared at once (one carry chain deep),
 //      into registers. Computing M at the take instead (negate, then a chain
 //      of AXES compares) made that the critical path (29 MHz on iCE40 HX8K
 //      with 4 axes); the compares and the remainder step in one clock made
 //      it 61-73 MHz.
 //   2. the integer bit, |delta_i| >= M, i.e. the axis is a maximum (from the
-//      registered compares); M, the OR of the maximal magnitudes (all equal).
-//   3. FRAC_W fraction bits, one a clock: bit = rem >= M; rem -= M when set;
-//      rem = 2 rem + the next dividend bit.
+//      registered compares; a maximal axis's R is 2^FRAC_W); M, the OR of
+//      the maximal magnitudes (all equal).
+//   3. FRAC_W fraction bits, one a clock, by non-restoring division: the
+//      register holds rem - M, the bit is its sign (a register), and the
+//      step adds -M or +M as that sign says, so no choice follows the carry
+//      chain (a restoring step, rem -= M when rem >= M, put 3-4 LUTs after
+//      it: 89 MHz on HX8K with 4 axes). The last bit is the sign of the
+//      final remainder.
 // The dividend is |delta_i| 2^FRAC_W + M - 1, so the quotient is the
 // rounded-up one itself (no increment after the division, no remainder
 // test); its low FRAC_W bits are M - 1, shifted in from a register loaded
-// with M - 1 in the first fraction clock (they are needed from the second
+// with M - 1 in the first fraction clock (they are needed from the third
 // on when FRAC_W >= ACC_W + 1). Rounding up, not to nearest: with
 // any rounding error e_i = R_i / 2^FRAC_W - |delta_i| / M >= 0 a step due
 // exactly on a tick stays on it, so the generator is tick for tick the
@@ -37,25 +42,27 @@
 // Zero-length commands (M = 0) skip the division.
 //
 // Latency and gaps: a command is loaded into the engine at the earliest
-// FRAC_W + 2 clocks after the clock that took it (on the last of the
-// FRAC_W + 2 divider clocks, with that clock's quotient bit); a zero-length
-// one 1 clock after. The division runs while
-// the previous command runs; the buffer frees on the clock that loads the
+// FRAC_W + 3 clocks after the clock that took it (on the clock after the
+// FRAC_W + 2 divider clocks: the load reads the quotient from registers
+// only); a zero-length one 1 clock after. The division runs while the
+// previous command runs; the buffer frees on the clock that loads the
 // engine and takes the next command one clock later, so a command is loaded
-// at the earliest FRAC_W + 3 clocks after the previous one. Back-to-back
-// commands therefore run without a gap when each runs at least FRAC_W + 3
+// at the earliest FRAC_W + 4 clocks after the previous one. Back-to-back
+// commands therefore run without a gap when each runs at least FRAC_W + 4
 // clocks from its load to its last tick; after a shorter one (C clocks) the
-// engine idles FRAC_W + 3 - C clocks before the next one's load. At feed 1/2
+// engine idles FRAC_W + 4 - C clocks before the next one's load. At feed 1/2
 // with 1-clock pulses and spaces (nothing stalls) a command runs
-// C = 2 max(M, 1) clocks: no gap from M >= (FRAC_W + 3) / 2 on (19 steps at
-// FRAC_W = 35), short lines back to back one per FRAC_W + 3 clocks (tested
+// C = 2 max(M, 1) clocks: no gap from M >= (FRAC_W + 4) / 2 on (20 steps at
+// FRAC_W = 35), short lines back to back one per FRAC_W + 4 clocks (tested
 // in tests/tb/fixed_ratio_test.cpp).
 //
 // Engine: per axis a FRAC_W-bit phase accumulator, started at one half (the
 // paper's mid-period step edge, its Eqs. 9/10), adds R_i on each feed tick;
-// its carry is a step. It is kept as phase + R_i (FRAC_W + 1 bits), so the
-// carry that decides the tick's step comes from a register and the adder is
-// off the stall path. After k ticks axis i has stepped
+// its carry is a step. It is kept one tick ahead: the tick's carry as a
+// register, and the next tick's phase + R_i (FRAC_W + 1 bits), whose carry
+// is the next tick's step: the step/dir stage, which decides the stall a
+// clock ahead, reads a register either way, and the adder (from registers)
+// only feeds the next tick's register. After k ticks axis i has stepped
 //     floor(k R_i / 2^FRAC_W + 1/2)
 // times. A per-axis down counter, loaded with |delta_i|, stops the axis after
 // exactly |delta_i| pulses, and the command completes when every counter is
@@ -170,12 +177,12 @@ module fixed_ratio #(
   // would need an inverter LUT in front of the chain).
   logic [ACC_W-1:0]      max_n_q, max_n_d;
   logic [DivW-1:0]       div_left_q, div_left_d;  // divider clocks still to run
-  logic                  div_last_q, div_last_d;  // div_left_q == 1: this clock gives the last bit
+  logic                  div_done_q, div_done_d;  // div_left_q == 0: the rate words are in quot_q
   logic                  cmd_take;  // a command is taken this clock
   logic                  buf_take;  // the engine loads the buffer this clock
   logic                  div_run;  // the dividers run one of their clocks
   logic [2:0]            ph_q, ph_d;  // bit k: divider clock k + 1 (compares, integer bit, first fraction bit)
-  logic                  buf_ready;  // the rate words are ready now or with this clock's quotient bit
+  logic                  buf_ready;  // the buffered command's rate words are ready
   logic [AXES*ACC_W-1:0] buf_mag;  // |delta_i| of the buffered command at [i*ACC_W +: ACC_W]
   logic [AXES*AXES-1:0]  cmp_ge, cmp_eq;  // bit i*AXES + j, i < j: |delta_i| >= (=) |delta_j|
   logic [AXES*AXES-1:0]  ge_q, ge_d, eq_q, eq_d;  // ...registered in divider clock 1
@@ -188,7 +195,7 @@ module fixed_ratio #(
   assign cmd_ready_o = !buf_valid_q;
   assign cmd_take    = cmd_valid_i && !buf_valid_q;
   assign div_run     = buf_valid_q && (div_left_q != '0);
-  assign buf_ready   = buf_valid_q && (div_left_q[DivW-1:1] == '0);
+  assign buf_ready   = buf_valid_q && div_done_q;
   assign cmd_zero    = (cmd_delta_i == '0);
 
   // M, a true maximum: every pair compared at once in the first divider
@@ -215,13 +222,14 @@ module fixed_ratio #(
     for (int i = 0; i < AXES; i++) max = max | (is_max[i] ? buf_mag[i*ACC_W +: ACC_W] : '0);
   end
 
-  // The dividend's low FRAC_W bits, M - 1 (< 2^(ACC_W-1)): cleared in the
-  // first divider clock, so that the integer and first fraction clocks
-  // shift in zeros (bits FRAC_W - 1 and FRAC_W - 2 of M - 1, both 0 as
-  // FRAC_W >= ACC_W + 1); loaded in the first fraction clock, aligned so
-  // that its MSB is the bit the second one shifts in; shifted left every
-  // clock.
-  assign low_d = ph_q[2] ? FRAC_W'({~(max_n_q + ACC_W'(1)), 2'b00}) :  // ~(~M + 1) = M - 1
+  // The dividend's low FRAC_W bits, M - 1 (< 2^(ACC_W-1)), MSB first, one
+  // clock after the restoring division would take each (the non-restoring
+  // step of clock k + 1 adds the bit of rem's step in clock k): cleared in the
+  // first divider clock, so that the first and second fraction clocks shift
+  // in zeros (bits FRAC_W - 1 and FRAC_W - 2 of M - 1, both 0 as FRAC_W >=
+  // ACC_W + 1); loaded in the first fraction clock, aligned so that its MSB
+  // is the bit the second one shifts in; shifted left every clock.
+  assign low_d = ph_q[2] ? FRAC_W'({~(max_n_q + ACC_W'(1)), 1'b0}) :  // ~(~M + 1) = M - 1
                  ph_q[0] ? '0 : {low_q[FRAC_W-2:0], 1'b0};
   // A division's clocks 1-3; an abort clears them (its division ends).
   assign ph_d  = abort_i ? '0 : {ph_q[1:0], cmd_take && !cmd_zero};
@@ -288,11 +296,13 @@ module fixed_ratio #(
     last_d = advance ? (take_adv ? (&buf_le1) : |(major & two)) : (take_idle ? (&buf_le1) : last_q);
     buf_valid_d = advance ? (cmd_take || (buf_valid_q && !take_adv)) :
                             (!abort_i && (cmd_take || (buf_valid_q && !take_idle)));
-    // The last divider clock (div_left_q = 1) may load the engine.
+    // The clock after the last divider clock may load the engine.
     div_left_d  = div_left_q;
     if (div_run) div_left_d = div_left_q - DivW'(1);
     if (cmd_take) div_left_d = cmd_zero ? '0 : DivClocks;
-    div_last_d = div_left_d == DivW'(1);
+    // div_left_d == 0, as a choice of registers and the take: no compare
+    // after the take's choice (ECP5: in_q -> div_done_q was 3-5 LUT + 1-3 mux).
+    div_done_d = cmd_take ? cmd_zero : div_run ? (div_left_q == DivW'(1)) : div_done_q;
     done_d     = last;
   end
 
@@ -301,7 +311,7 @@ module fixed_ratio #(
       buf_valid_q <= 1'b0;
       max_n_q     <= '0;
       div_left_q  <= '0;
-      div_last_q  <= 1'b0;
+      div_done_q  <= 1'b1;
       ph_q        <= '0;
       ge_q        <= '0;
       eq_q        <= '0;
@@ -312,7 +322,7 @@ module fixed_ratio #(
     end else begin
       buf_valid_q <= buf_valid_d;
       div_left_q  <= div_left_d;
-      div_last_q  <= div_last_d;
+      div_done_q  <= div_done_d;
       ph_q        <= ph_d;
       low_q       <= low_d;
       ge_q        <= ge_d;
@@ -341,24 +351,30 @@ module fixed_ratio #(
     logic             buf_neg_q, buf_neg_d;
     logic             buf_nz_q, buf_nz_d;  // |delta_i| != 0
     logic             buf_one_q, buf_one_d;  // |delta_i| == 1
-    logic [ACC_W-1:0] rem_q, rem_d;  // partial remainder, < 2 M
-    logic [ACC_W:0]   diff;  // rem - M
-    logic             bit_ge;  // rem >= M: the quotient bit
-    // rem - M when bit_ge, else rem: < M <= 2^(ACC_W-1), its MSB always 0.
+    // Non-restoring division: s = rem - M (two's complement, -M <= s < M),
+    // so that the quotient bit is s's sign, a register, and a step adds +M or
+    // -M as that register says (no choice after the carry chain).
+    logic [ACC_W-1:0] s_q, s_d;  // rem - M; |delta_i| after divider clock 2
+    logic             s_neg;  // s < 0: the quotient bit of this remainder is 0
+    logic             zap_q, zap_d;  // divider clock 3 of a maximal axis: its remainder is 0
+    logic [ACC_W-1:0] op_a, op_b;  // the step's operands: 2 s + the dividend bit, and -M or +M
+    logic             op_c;  // its carry in (-M = ~M + 1)
     /* verilator lint_off UNUSEDSIGNAL */
-    logic [ACC_W-1:0] rem_sub, rem_hold;
+    logic [ACC_W:0]   step;  // {op_a + op_b + op_c, the carry in's bit}
     /* verilator lint_on UNUSEDSIGNAL */
-    logic [FRAC_W:0]  quot_q, quot_d;  // quotient bits so far, the last in bit 0
-    // Engine: the rate word R <= 2^FRAC_W, and the phase accumulator kept as
-    // phase + R, so that the carry is a register.
+    logic [FRAC_W-2:0] quot_q, quot_d;  // fraction bits but the last, the latest in bit 0
+    logic [FRAC_W:0]  rate_load;  // R of the buffered command, once its division is done
+    // Engine: the rate word R <= 2^FRAC_W, and the phase accumulator kept one
+    // tick ahead: this tick's carry as a register, and the next tick's
+    // phase + R, so that the carry the stage reads a clock ahead is a
+    // register too (no add between a register and the stall).
     logic [FRAC_W:0]  rate_q, rate_d;  // R = ceil(|delta_i| 2^FRAC_W / M)
-    logic [FRAC_W:0]  sum_q, sum_d;  // phase + R < 2^(FRAC_W+1); phase = sum_q[FRAC_W-1:0]
-    logic [FRAC_W:0]  sum_next;  // the next tick's phase + R
-    logic [FRAC_W:1]  sum_load;  // one half + R, but bit 0 (load_bit or sum0_other)
-    logic [FRAC_W:0]  rate_load;  // R, when the engine loads: quot_d
-    logic             load_bit;  // ...in the last divider clock, its bit 0 is this clock's quotient bit
-    (* keep *) logic  sum0_other;  // sum_d[0] unless a load takes load_bit (see below)
-    (* keep *) logic  use_bit;  // a load in the last divider clock: sum_d[0] = load_bit
+    logic             car_q, car_d;  // this tick's carry (its step)
+    logic [FRAC_W:0]  nxt_q, nxt_d;  // the next tick's phase + R < 2^(FRAC_W+1)
+    logic [FRAC_W:0]  nxt_add;  // the tick after the next one's phase + R
+    logic             nxt_sel;  // the add goes into nxt_q: the engine advances, no load
+    logic             car_load;  // at a load: the first tick's carry, of one half + R
+    logic [FRAC_W:0]  nxt_load;  // ...and the second tick's phase + R
     logic [ACC_W-1:0] cnt_q, cnt_d;  // pulses still to send
     // cnt_q != 0 and cnt_q == 1 as registers, decided a clock ahead: the
     // stall and completion logic reads no compare of the counter.
@@ -373,62 +389,58 @@ module fixed_ratio #(
     assign cmd_mag = cmd_neg ? ACC_W'(-delta) : delta;
     assign buf_mag[i*ACC_W +: ACC_W] = buf_mag_q;
 
-    // One restoring-division step: rem < 2 M <= 2^ACC_W before it, < M after
-    // the subtraction, so 2 rem + a bit still fits ACC_W bits. The integer
-    // step (divider clock 2) starts from rem = |delta_i| <= M (M not yet in
-    // max_n_q): its bit is is_max, and rem becomes 0 or 2 |delta_i|. In
-    // clock 1 the step's result is not used (clock 2 overwrites rem, and
-    // its quotient bit is shifted out).
-    assign diff    = {1'b0, rem_q} - {1'b0, ~max_n_q};
-    assign bit_ge  = ph_q[1] ? is_max[i] : !diff[ACC_W];
-    // rem_hold: the remainder if the step does not subtract, from registers
-    // only, so that one LUT follows the carry chain.
-    assign rem_hold = ph_q[1] ? (is_max[i] ? '0 : buf_mag_q) : rem_q;
-    assign rem_sub  = (bit_ge && !ph_q[1]) ? diff[ACC_W-1:0] : rem_hold;
-    assign rem_d    = div_run ? {rem_sub[ACC_W-2:0], low_q[FRAC_W-1]} : rem_q;
-    // After the FRAC_W + 1 steps of clocks 2 .. FRAC_W + 2 (quot_d in the
-    // last) the quotient is ceil(|delta_i| 2^FRAC_W / M) <= 2^FRAC_W.
-    assign quot_d  = div_run ? {quot_q[FRAC_W-1:0], bit_ge} : quot_q;
+    // One division step a clock (divider clocks 3 .. FRAC_W + 2), with
+    // rem the restoring division's partial remainder (0 <= rem < 2 M) and b
+    // the dividend's next bit: its quotient bit is rem >= M, i.e. s >= 0, and
+    // the next s is 2 (rem - M [bit]) + b - M = 2 s + b - M (bit 1) or
+    // 2 s + b + M (bit 0): an add of registers, its operands chosen in front
+    // of the carry chain by registers only. Divider clock 2 loads s with
+    // |delta_i| (op_a = |delta_i|, op_b = 0), rem after the integer step
+    // (rem = |delta_i| - M bit; M is not yet in max_n_q); clock 3's step
+    // (s >= 0: -M; for |delta_i| = M = 2^(ACC_W-1), +M, the same modulo
+    // 2^ACC_W) then gives s = 2 rem - M, with rem = 0 for a maximal axis
+    // (zap_q: op_a = 0, the integer bit 1). The bit of the s each clock
+    // starts with goes into quot_q (clocks 4 .. FRAC_W + 2: the fraction bits
+    // but the last), the last is the sign of the final s; the integer bit is
+    // is_max. (In clock 1 the step's result is not used.)
+    assign s_neg = s_q[ACC_W-1];
+    assign zap_d = ph_q[1] && is_max[i];
+    assign op_a  = ph_q[1] ? buf_mag_q : zap_q ? '0 : {s_q[ACC_W-2:0], low_q[FRAC_W-1]};
+    assign op_b  = ph_q[1] ? '0 : (max_n_q ^ {ACC_W{s_neg}});  // s < 0: +M = ~max_n_q
+    assign op_c  = !ph_q[1] && !s_neg;
+    assign step  = {op_a, 1'b1} + {op_b, op_c};
+    assign s_d   = div_run ? step[ACC_W:1] : s_q;
+    assign quot_d = div_run ? {quot_q[FRAC_W-3:0], !s_neg} : quot_q;
+    assign rate_load = {is_max[i], quot_q, !s_neg};
 
     // Engine: a tick adds R to the phase; the carry out is a step.
-    assign carry[i] = sum_q[FRAC_W];
+    assign carry[i] = car_q;
     assign left[i]  = left_q;
     assign two[i]   = cnt_q == ACC_W'(2);
     assign major[i] = major_q;
     assign buf_le1[i] = !buf_nz_q || buf_one_q;
     assign neg[i]   = neg_q;
     assign neg_next[i] = neg_d;
-    assign sum_next = {1'b0, sum_q[FRAC_W-1:0]} + rate_q;
-    // One half + R, R = quot_d <= 2^FRAC_W: only bits FRAC_W and FRAC_W - 1
-    // change (written out: an adder here would put a carry chain on the load).
-    // The engine loads in the last divider clock or later (buf_ready), so
-    // R = quot_d, from registers but for the last clock's quotient bit. That
-    // bit comes out of the remainder's carry chain: it gets its own LUT in
-    // front of the sum_q[0] flip-flop (sum0_other is kept as a net, else
-    // ABC, which sees the chain's carry as early as a register, buries it
-    // two LUTs deep).
-    assign load_bit  = !diff[ACC_W];
-    assign rate_load = div_last_q ? {quot_q[FRAC_W-1:0], load_bit} : quot_q;
-    assign sum_load  = {rate_load[FRAC_W] || rate_load[FRAC_W-1],
-                        rate_load[FRAC_W] || !rate_load[FRAC_W-1], rate_load[FRAC_W-2:1]};
-    assign sum0_other = advance ? (take_adv ? quot_q[0] : sum_next[0]) :
-                                  (take_idle ? quot_q[0] : sum_q[0]);
-    assign use_bit    = div_last_q && (advance ? take_adv : take_idle);
-    // The top bit (the carry, the end of the add's carry chain) chooses in
-    // the last LUT, by the kept nets top_sel and top_other (for the ABC
-    // reason above).
-    (* keep *) logic top_sel, top_other;
-    assign top_sel    = advance && !take_adv;
-    assign top_other  = advance ? sum_load[FRAC_W] : (take_idle ? sum_load[FRAC_W] : sum_q[FRAC_W]);
-    assign sum_d      = {top_sel ? sum_next[FRAC_W] : top_other,
-                         advance ? (take_adv ? sum_load[FRAC_W-1:1] : sum_next[FRAC_W-1:1]) :
-                                   (take_idle ? sum_load[FRAC_W-1:1] : sum_q[FRAC_W-1:1]),
-                         use_bit ? load_bit : sum0_other};
+    // A tick: this tick's carry becomes the next one's (a register), and the
+    // next tick's phase + R the one after it (the add, from registers only).
+    assign nxt_add = {1'b0, nxt_q[FRAC_W-1:0]} + rate_q;
+    // A load (R = rate_load <= 2^FRAC_W, the division done: registers only;
+    // the phase starts at one half): the first tick's phase + R is one half + R,
+    // its carry R[F] | R[F-1] (F = FRAC_W); the second's, one half + 2 R -
+    // 2^F carry, differs from 2 R only in the top two bits (written out, no
+    // adder): with t = R[F:F-2] (0..4) they are 1 + t - 2 (t >= 2).
+    assign car_load = rate_load[FRAC_W] || rate_load[FRAC_W-1];
+    assign nxt_load = {rate_load[FRAC_W] || rate_load[FRAC_W-2], !rate_load[FRAC_W-2],
+                       rate_load[FRAC_W-3:0], 1'b0};
+    // advance is late: it only selects, in the last LUT before each register.
+    assign nxt_sel = advance && !take_adv;
+    assign car_d   = nxt_sel ? nxt_q[FRAC_W] : (buf_take ? car_load : car_q);
+    assign nxt_d   = nxt_sel ? nxt_add : (buf_take ? nxt_load : nxt_q);
     assign cnt_d  = advance ? (take_adv ? buf_mag_q : must[i] ? cnt_q - ACC_W'(1) : cnt_q) :
                               (take_idle ? buf_mag_q : cnt_q);
     assign left_d = advance ? (take_adv ? buf_nz_q : must[i] ? !one_q : left_q) :
                               (take_idle ? buf_nz_q : left_q);
-    assign must_next[i] = sum_d[FRAC_W] && left_d;
+    assign must_next[i] = car_d && left_d;
     assign one_d  = advance ? (take_adv ? buf_one_q : must[i] ? two[i] : one_q) :
                               (take_idle ? buf_one_q : one_q);
     // The buffer takes the offered command; the engine, on a load, the
@@ -453,10 +465,12 @@ module fixed_ratio #(
         buf_one_q <= 1'b0;
         left_q    <= 1'b0;
         one_q     <= 1'b0;
-        rem_q     <= '0;
+        s_q       <= '0;
+        zap_q     <= 1'b0;
         quot_q    <= '0;
         rate_q    <= '0;
-        sum_q     <= '0;
+        car_q     <= 1'b0;
+        nxt_q     <= '0;
         cnt_q     <= '0;
         neg_q     <= 1'b0;
         major_q   <= 1'b0;
@@ -467,10 +481,12 @@ module fixed_ratio #(
         buf_one_q <= buf_one_d;
         left_q    <= left_d;
         one_q     <= one_d;
-        rem_q     <= rem_d;
+        s_q       <= s_d;
+        zap_q     <= zap_d;
         quot_q    <= quot_d;
         rate_q    <= rate_d;
-        sum_q     <= sum_d;
+        car_q     <= car_d;
+        nxt_q     <= nxt_d;
         cnt_q     <= cnt_d;
         neg_q     <= neg_d;
         major_q   <= major_d;
@@ -508,51 +524,11 @@ module fixed_ratio #(
   assign done_o = done_q;
 
 `ifdef FORMAL
-  // ---------------------------------------------------------------------------
-  // Formal (scripts/formal.sh, rtl/formal/fixed_ratio_props.sv): the port
-  // contract every core shares (rtl/formal/core_contract.sv) with the
-  // commands the buffer (with its division) and the engine hold, and the invariants of the
-  // registers it rests on.
-  logic [1:0] f_held;
-  assign f_held = 2'(buf_valid_q) + 2'(act_q);
-
-  core_contract #(
-    .AXES  (AXES),
-    .TIM_W (TIM_W),
-    .CAP   (2),
-    .HELD_W(2)
-  ) u_contract (
-    .clk_i,
-    .rst_ni,
-    .cmd_valid_i,
-    .cmd_ready_o,
-    .abort_i,
-    .step_len_i,
-    .step_o,
-    .busy_o,
-    .done_o,
-    .held_i(f_held)
-  );
-
-  // Progress: while a command runs with full feed (feed_i >= 2^FEED_W on the
-  // clock before) and no abort, the engine advances on every clock but one on
-  // which an axis its tick steps is not ready: it waits for the step/dir timing
-  // only, and rtl/formal/stepdir_axis_props.sv proves that ready_o waits for
-  // exactly that (never longer; dir_o turns as soon as the hold allows).
-  logic f_full_q, f_full_d;
-  assign f_full_d = feed_i[FEED_W];
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) f_full_q <= 1'b0;
-    else f_full_q <= f_full_d;
-  end
-
+  // Formal (scripts/formal.sh): rtl/formal/fixed_ratio_props.sv attaches the
+  // port contract and the engine's progress; here, the flag registers equal
+  // the compares they stand for.
   always_comb begin
-    if (rst_ni) begin
-      a_progress: assert(!(act_q && f_full_q && !abort_i) || advance || (must & ~unused_ready) != '0);
-      a_tick: assert(!tick || act_q);
-      // The flag registers equal the compares they stand for.
-      a_cnt_flags: assert(f_cnt_ok == '1 && div_last_q == (div_left_q == DivW'(1)));
-    end
+    if (rst_ni) a_cnt_flags: assert(f_cnt_ok == '1 && div_done_q == (div_left_q == '0));
   end
 `endif
 endmodule

@@ -12,7 +12,9 @@
 #                 every input free): the port contract every core shares
 #                 (rtl/formal/core_contract.sv: no command dropped, busy_o and
 #                 done_o exact, abort reaches idle within the pulse's length)
-#                 and the invariants in the RTL's `ifdef FORMAL` blocks
+#                 and the engine's progress (rtl/formal/core_checks.sv),
+#                 attached by the props file or instantiated in the RTL's
+#                 `ifdef FORMAL` block, and the invariants in those blocks
 #
 # Usage: scripts/formal.sh [--blocks LIST] [--depth N] [--tim-w "W..."] [--out DIR]
 #   --blocks LIST  blocks to check (default "stepdir_axis step_stage", the
@@ -85,20 +87,25 @@ done
 out=${out:-$build/reports/formal}
 mkdir -p "$out"
 # Each block: its RTL files (dependencies first). A core: rtl/<core>.f and
-# the contract checker its `ifdef FORMAL` block instantiates.
+# the shared checkers (rtl/formal/core_contract.sv, which some cores
+# instantiate in their `ifdef FORMAL` block, and rtl/formal/core_checks.sv,
+# which the others' props files attach).
 declare -A block_files=(
   [stepdir_axis]="$root/rtl/stepdir_timing.sv $root/rtl/stepdir_axis.sv"
   [step_stage]="$root/rtl/stepdir_timing.sv $root/rtl/stepdir_axis.sv $root/rtl/step_stage.sv"
 )
 for core in "${core_blocks[@]}"; do
-  block_files[$core]="$(sed -n "/^[^#]/s|^|$root/rtl/|p" "$root/rtl/$core.f" | tr '\n' ' ')$root/rtl/formal/core_contract.sv"
+  block_files[$core]="$(sed -n "/^[^#]/s|^|$root/rtl/|p" "$root/rtl/$core.f" | tr '\n' ' ')$root/rtl/formal/core_contract.sv $root/rtl/formal/core_checks.sv"
 done
 # Signals a proof links across the hierarchy after flattening (Yosys 0.23 has
-# no hierarchical references): log_stepper's tags against the segments its
-# fine stage holds.
-declare -A block_links=(
-  [log_stepper]="dut.f_fine_held=dut.u_fine.f_held"
-)
+# neither `bind` nor hierarchical references): each `// link: A=B ...` line of
+# a block's props file connects wire A to B (e.g. the props file's checker
+# inputs to the core's registers; log_stepper's tags against the segments its
+# fine stage holds).
+declare -A block_links=()
+for b in "${all_blocks[@]}"; do
+  block_links[$b]=$(sed -n 's|^// link: ||p' "$root/rtl/formal/${b}_props.sv" | tr '\n' ' ')
+done
 
 # Yosys 0.23 silently misreads some SystemVerilog literals; a proof about the
 # misread design would prove nothing about the RTL.
@@ -160,17 +167,19 @@ for r in "${runs[@]}"; do
   fi
   link=""
   if [ -n "${block_links[$block]:-}" ]; then
-    link="flatten;"
-    for l in ${block_links[$block]}; do link+=" connect -set ${l%%=*} ${l#*=};"; done
+    # Before any optimisation, so that every signal named is still there
+    # and no link wire has become an alias of another.
+    link="hierarchy -check -top ${block}_props; proc; flatten;"
+    for l in ${block_links[$block]}; do link+=" connect -nounset -set ${l%%=*} ${l#*=};"; done
   fi
   smt=$out/$tag.smt2
-  # prep; memory_map (a case the proc pass turns into a ROM would be a memory
-  # whose contents induction leaves free); the links; check -assert (no
+  # The links; prep; memory_map (a case the proc pass turns into a ROM would
+  # be a memory whose contents induction leaves free); check -assert (no
   # undriven wire: a misread reference or a missing link fails here); then
   # async2sync (the asynchronous reset as logic on the flip-flop outputs,
   # which smtbmc can step) and dffunmap (plain $dff for write_smt2).
   yosys -q -l "$out/prep_$tag.log" -p "read_verilog -sv -formal ${block_files[$block]} $props;
-    $chp prep -top ${block}_props; memory_map; opt_clean; $link check -assert;
+    $chp $link prep -top ${block}_props; memory_map; opt_clean; check -assert;
     async2sync; dffunmap; write_smt2 -wires $smt" >/dev/null 2>&1 ||
     die "step 'yosys prep' failed for $tag; see $out/prep_$tag.log"
   # --unroll: with the default encoding, z3 4.8.12 spends ~80 s on the very

@@ -2,9 +2,11 @@
 // shares"; each core's header), as properties of its ports, for
 // scripts/formal.sh (Yosys read_verilog -formal, yosys-smtbmc).
 //
-// Each core instantiates this checker inside its `ifdef FORMAL` block (Yosys
-// 0.23 has neither `bind` nor hierarchical references), on its own ports and
-// one number from its registers: held_i, the commands it holds (taken and
+// A core instantiates this checker inside its `ifdef FORMAL` block, or its
+// props file attaches it through rtl/formal/core_checks.sv (Yosys 0.23 has
+// neither `bind` nor hierarchical references: scripts/formal.sh connects the
+// props file's wires to the core's signals), on the core's ports and one
+// number from its registers: held_i, the commands it holds (taken and
 // neither completed nor dropped by an abort: its buffer entries and the
 // running command). The checker counts the same from the ports alone,
 //   pend   commands taken (cmd_valid_i && cmd_ready_o at an edge) minus those

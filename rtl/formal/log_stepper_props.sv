@@ -3,8 +3,9 @@
 // input free on every clock (curve commands, feed, the four timing settings,
 // abort), reset in the first cycle only. scripts/formal.sh flattens the
 // design and connects dut.f_fine_held to dut.u_fine.f_held (the segments the
-// fine stage holds; Yosys 0.23 has no hierarchical references). The
-// properties are in the RTL's `ifdef FORMAL` blocks:
+// fine stage holds; Yosys 0.23 has no hierarchical references):
+// link: dut.f_fine_held=dut.u_fine.f_held
+// The properties are in the RTL's `ifdef FORMAL` blocks:
 //   rtl/formal/core_contract.sv  the port contract (a_link, a_cap, a_busy,
 //                                a_done, a_rise, a_abort, a_abort_len, a_len),
 //                                twice: rtl/log_stepper.sv's on its ports and

@@ -1,17 +1,25 @@
 // Formal environment of ppc_arc (scripts/formal.sh --blocks ppc_arc): the
 // core with narrow parameters and every input free on every clock (commands:
 // centre, end, direction; feed, the four timing settings, abort), reset in
-// the first cycle only. The properties are in the RTL's `ifdef FORMAL`
-// blocks:
-//   rtl/formal/core_contract.sv  the port contract (a_link, a_cap, a_busy,
-//                                a_done, a_rise, a_abort, a_abort_len, a_len),
-//                                instantiated by rtl/ppc_arc.sv on its ports
-//                                and the commands its buffer and engine hold;
-//   rtl/ppc_arc.sv               a_tick (a feed tick only while a command
-//                                runs) and a_progress (at full feed the
-//                                engine stalls only for an axis not ready);
+// the first cycle only. The properties:
+//   rtl/formal/core_checks.sv    the port contract (rtl/formal/core_contract.sv:
+//                                a_link, a_cap, a_busy, a_done, a_rise,
+//                                a_abort, a_abort_len, a_len) on the core's
+//                                ports and the commands its buffer and engine
+//                                hold, a_tick (a feed tick only while a
+//                                command runs) and a_progress (at full feed
+//                                the engine stalls only for an axis not
+//                                ready), attached below;
+//   a_pend_buf (below)           the engine's pending copy is the buffered
+//                                command;
 //   rtl/stepdir_axis.sv          a_fire_ready (the engine fires only a ready
 //                                axis), per axis.
+// scripts/formal.sh flattens the design and connects each wire of a
+// `// link:` line to the core's signal (Yosys 0.23 has neither `bind` nor
+// hierarchical references):
+// link: hold_i[1]=dut.buf_valid_q hold_i[0]=dut.act run_i=dut.act tick_i=dut.tick
+// link: advance_i=dut.advance want_i=dut.carry ready_i=dut.unused_ready
+// link: pending=dut.unused_pending
 // COORD_W = 3: centre and end offsets -4..3; TIM_W = 2: settings 0..3,
 // pulses up to 3 clocks.
 module ppc_arc_props #(
@@ -34,9 +42,14 @@ module ppc_arc_props #(
   input logic [TIM_W-1:0]        dir_hold_i,
   input logic                    abort_i
 );
-  logic                  cmd_ready, busy, done;
-  logic [AXES-1:0]       step, dir;
+  // The core's ports and, connected by the link lines above, its signals that
+  // rtl/formal/core_checks.sv reads (run_i, tick_i, advance_i, want_i,
+  // ready_i, hold_i).
+  logic                  cmd_ready_o, busy_o, done_o, run_i, tick_i, advance_i;
+  logic [AXES-1:0]       step_o, dir, want_i, ready_i;
   logic [AXES*POS_W-1:0] pos;
+  logic [1:0]            hold_i;  // the buffer's command, the engine's
+  core_checks #(.AXES(AXES), .TIM_W(TIM_W), .FEED_W(FEED_W), .HOLD(2)) u_checks (.*);
 
   ppc_arc #(
     .AXES   (AXES),
@@ -48,7 +61,7 @@ module ppc_arc_props #(
     .clk_i,
     .rst_ni,
     .cmd_valid_i,
-    .cmd_ready_o(cmd_ready),
+    .cmd_ready_o,
     .cmd_center_i,
     .cmd_end_i,
     .cmd_ccw_i,
@@ -58,12 +71,17 @@ module ppc_arc_props #(
     .dir_setup_i,
     .dir_hold_i,
     .abort_i,
-    .step_o     (step),
+    .step_o,
     .dir_o      (dir),
     .pos_o      (pos),
-    .busy_o     (busy),
-    .done_o     (done)
+    .busy_o,
+    .done_o
   );
+
+  logic pending;  // the engine holds a copy of the next command
+  always_comb begin
+    if (rst_ni) a_pend_buf: assert(!pending || hold_i[1]);
+  end
 
   // Reset in the first cycle only.
   logic f_init = 1'b1;

@@ -131,11 +131,11 @@ TYPED_TEST(FixedRatioLockstep, PaperLines) {
 // Completion in exactly M engine ticks. At feed 1/2 with step/dir timing
 // 1,1,1,1 nothing stalls (a tick every second clock, an axis may pulse every
 // second clock), so the clock count is exact: 2 reset edges, the edge that
-// takes the command, FRAC_W + 2 divider edges (the last one loads the
-// engine), ticks on the 2nd, 4th, ... edge after it (the feed phase starts at
+// takes the command, FRAC_W + 2 divider edges, the edge that loads the
+// engine, ticks on the 2nd, 4th, ... edge after it (the feed phase starts at
 // 0), the edge the last pulse falls (busy_o low), 2 tail edges:
-//     cycles = 2 + 1 + (FRAC_W + 2) + 2 M + 1 + 2 = 2 M + FRAC_W + 8,
-// the first step on case cycle FRAC_W + 7, the major axis stepping on every
+//     cycles = 2 + 1 + (FRAC_W + 2) + 1 + 2 M + 1 + 2 = 2 M + FRAC_W + 9,
+// the first step on case cycle FRAC_W + 8, the major axis stepping on every
 // tick: M moves 2 clocks apart.
 TYPED_TEST(FixedRatioLockstep, CompletionInMTicksExactClocks) {
   const VariantSpec l = spec_of<A, TypeParam>();
@@ -147,11 +147,11 @@ TYPED_TEST(FixedRatioLockstep, CompletionInMTicksExactClocks) {
     std::vector<CaseResult> r;
     const auto moves =
         timed_moves<TypeParam>(commands_case(l, {cmd}, half_feed_unit_timing<A>(l)), &r);
-    EXPECT_EQ(r[0].cycles, 2 * m + frac_w + 8) << m;
-    EXPECT_EQ(r[0].first_step_cycle, frac_w + 7) << m;
+    EXPECT_EQ(r[0].cycles, 2 * m + frac_w + 9) << m;
+    EXPECT_EQ(r[0].first_step_cycle, frac_w + 8) << m;
     ASSERT_EQ(moves.size(), m);
     for (size_t k = 0; k < moves.size(); ++k)
-      EXPECT_EQ(moves[k].cycle, frac_w + 7 + 2 * k) << "move " << k;
+      EXPECT_EQ(moves[k].cycle, frac_w + 8 + 2 * k) << "move " << k;
   }
   // A zero-length command: take, no division, load, one tick (done_o,
   // busy_o falls), 2 tail edges.
@@ -162,22 +162,23 @@ TYPED_TEST(FixedRatioLockstep, CompletionInMTicksExactClocks) {
   EXPECT_EQ(r[0].cycles, 2u + 1 + 1 + 2 + 2);
 }
 
-// The divider's gap. A command's rate words are ready with the last of the
-// FRAC_W + 2 divider clocks after the clock that took it, so it is loaded at
-// the earliest FRAC_W + 3 clocks after the previous command's load (the
-// buffer frees on that load and takes the next command one clock later). Back-to-back commands run
-// without a gap when each runs at least FRAC_W + 3 clocks from its load to
-// its last tick; otherwise the engine idles FRAC_W + 3 minus that many
-// clocks. At feed 1/2 without stalls a command runs 2 max(M, 1) clocks:
+// The divider's gap. A command's rate words are ready after the FRAC_W + 2
+// divider clocks that follow the clock that took it, so it is loaded at the
+// earliest FRAC_W + 3 clocks after its take and FRAC_W + 4 clocks after the
+// previous command's load (the buffer frees on that load and takes the next
+// command one clock later). Back-to-back commands run without a gap when
+// each runs at least FRAC_W + 4 clocks from its load to its last tick;
+// otherwise the engine idles FRAC_W + 4 minus that many clocks. At feed 1/2
+// without stalls a command runs 2 max(M, 1) clocks:
 //   - a long line followed by a short one: no gap, the major axis keeps
 //     stepping every 2 clocks across the boundary (also for the shortest
-//     line that is long enough, M = ceil((FRAC_W + 3) / 2));
-//   - short lines back to back: one every FRAC_W + 3 clocks, the engine
-//     idle FRAC_W + 3 - 2 M clocks between two.
+//     line that is long enough, M = ceil((FRAC_W + 4) / 2));
+//   - short lines back to back: one every FRAC_W + 4 clocks, the engine
+//     idle FRAC_W + 4 - 2 M clocks between two.
 TYPED_TEST(FixedRatioLockstep, DividerGapOnlyAfterShortLines) {
   const VariantSpec l = spec_of<A, TypeParam>();
   const uint64_t frac_w = static_cast<uint64_t>(l.param("FRAC_W"));
-  const int64_t no_gap = static_cast<int64_t>((frac_w + 3 + 1) / 2);  // 2 M >= FRAC_W + 3
+  const int64_t no_gap = static_cast<int64_t>((frac_w + 4 + 1) / 2);  // 2 M >= FRAC_W + 4
   // Same directions throughout: no direction change may delay a step.
   for (const int64_t long_m : {int64_t{40}, no_gap}) {
     const auto moves = timed_moves<TypeParam>(
@@ -187,14 +188,14 @@ TYPED_TEST(FixedRatioLockstep, DividerGapOnlyAfterShortLines) {
       EXPECT_EQ(moves[k].cycle - moves[k - 1].cycle, 2u) << long_m << " move " << k;
   }
   for (const int64_t m : {no_gap - 1, int64_t{3}, int64_t{1}}) {
-    // Five short lines: each starts FRAC_W + 3 clocks after the one before.
+    // Five short lines: each starts FRAC_W + 4 clocks after the one before.
     const auto moves = timed_moves<TypeParam>(
         commands_case(l, std::vector<A::Command>(5, delta({m, 1})), half_feed_unit_timing<A>(l)));
     ASSERT_EQ(moves.size(), static_cast<size_t>(5 * m));
     for (size_t k = 1; k < moves.size(); ++k) {
       const uint64_t step = moves[k].cycle - moves[k - 1].cycle;
       if (k % static_cast<size_t>(m) == 0)  // first move of a line: after the gap
-        EXPECT_EQ(step, 2 + (frac_w + 3 - 2 * static_cast<uint64_t>(m))) << m << " move " << k;
+        EXPECT_EQ(step, 2 + (frac_w + 4 - 2 * static_cast<uint64_t>(m))) << m << " move " << k;
       else
         EXPECT_EQ(step, 2u) << m << " move " << k;
     }
