@@ -367,7 +367,7 @@ BusCompare run_bus(const PartProgramSetup& setup, const tb::VariantSpec& l,
                    const models::LatticePoint& lockstep_end, uint64_t lockstep_clocks) {
   auto prog = std::make_shared<Program>(open_source(setup), setup.machine, widths, setup.feed_mode,
                                         setup.program, nullptr, nullptr, nullptr,
-                                        setup.kinematics_window_s);
+                                        setup.kinematics_window_s, /*profiled=*/false);
   tb::bus::LatticeCheck check(record);
   BusSink sink{*prog, check};
   tb::bus::SocSetup s;
