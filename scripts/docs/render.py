@@ -225,7 +225,7 @@ def r_pick(_):
          "%s plain, %s half" % (f4(hw_worst(P, "dda_line")), f4(hw_worst(P, "dda_line half"))),
          f4(hw_worst(P, "ppc_line"))],
         ["axes", "N", "N", "2 (`ppc_arc` for arcs)"],
-        ["1-step commands back to back, clocks each (200 in a row)", "%s (`FRAC_W + 3` = 38)" % per[fr],
+        ["1-step commands back to back, clocks each (200 in a row)", "%s (`FRAC_W + 4` = 39)" % per[fr],
          per[dd], per[pp]],
     ]
     return table(["", "`%s`" % fr, "`%s`" % dd, "`%s`" % pp], rows) + [
