@@ -100,6 +100,24 @@ struct SocRunResult {
 // pins on every clock and is compared with the model. The run ends when the
 // host is done, every push completed and `drain` clocks passed with no step;
 // at the HLS face's first difference; or after max_clocks.
+// Reset: two rising edges with rst_ni low (probe and e-stop low; the caller
+// has put the bus pins in their idle state). before_edge(m) runs before each
+// rising edge: an HLS shadow samples the pins there.
+template <class Model, class BeforeEdge>
+void reset_soc(Model& m, BeforeEdge&& before_edge) {
+  m.probe_i = 0;
+  m.estop_i = 0;
+  m.rst_ni = 0;
+  for (int i = 0; i < 2; ++i) {
+    m.clk_i = 0;
+    m.eval();
+    before_edge(m);
+    m.clk_i = 1;
+    m.eval();
+  }
+  m.rst_ni = 1;
+}
+
 template <class Model, template <class> class Master, class Probe, class Src, class Sink,
           class Shadow>
 SocRunResult run_soc(Src& src, const SocSetup& setup, Sink& sink, Shadow& shadow,
@@ -113,19 +131,8 @@ SocRunResult run_soc(Src& src, const SocSetup& setup, Sink& sink, Shadow& shadow
   SocHost<Src> host(src, setup);
   SocRunResult r;
   r.end.assign(static_cast<size_t>(setup.axes), 0);
-  // Reset: two clocks with rst_ni low, the bus idle.
-  master.drive(m);
-  m.probe_i = 0;
-  m.estop_i = 0;
-  m.rst_ni = 0;
-  for (int i = 0; i < 2; ++i) {
-    m.clk_i = 0;
-    m.eval();
-    shadow.before_edge(m);
-    m.clk_i = 1;
-    m.eval();
-  }
-  m.rst_ni = 1;
+  master.drive(m);  // the bus idle
+  reset_soc(m, [&](Model& mm) { shadow.before_edge(mm); });
   const uint32_t mask = (1u << setup.axes) - 1;
   uint32_t prev_step = 0;
   uint64_t quiet = 0;

@@ -174,17 +174,8 @@ void random_traffic(uint64_t seed, int axes, int commands, uint32_t max_wait) {
   auto uni = [&](int64_t lo, int64_t hi) {
     return std::uniform_int_distribution<int64_t>(lo, hi)(rng);
   };
-  m.probe_i = 0;
-  m.estop_i = 0;
-  m.rst_ni = 0;
   master.drive(m);
-  for (int i = 0; i < 2; ++i) {
-    m.clk_i = 0;
-    m.eval();
-    m.clk_i = 1;
-    m.eval();
-  }
-  m.rst_ni = 1;
+  bus::reset_soc(m, [](Model&) {});
 
   struct Op {
     bus::BusTxn t;
@@ -394,18 +385,8 @@ void random_lockstep(uint64_t seed, uint64_t clocks) {
   auto uni = [&](int64_t lo, int64_t hi) {
     return std::uniform_int_distribution<int64_t>(lo, hi)(rng);
   };
-  m.probe_i = 0;
-  m.estop_i = 0;
-  m.rst_ni = 0;
   master.drive(m);
-  for (int i = 0; i < 2; ++i) {
-    m.clk_i = 0;
-    m.eval();
-    shadow.before_edge(m);
-    m.clk_i = 1;
-    m.eval();
-  }
-  m.rst_ni = 1;
+  bus::reset_soc(m, [&](Model& mm) { shadow.before_edge(mm); });
   const uint32_t full_feed = 1u << Cfg::FEED_W;
   std::array<int64_t, 2> center{}, end{};
   bool ccw = false;
@@ -553,16 +534,7 @@ TEST(SocBusHls, AxiChannelsOverlapAndMatchTheRtl) {
   m.s_axil_awvalid_i = m.s_axil_wvalid_i = m.s_axil_arvalid_i = 0;
   m.s_axil_bready_i = m.s_axil_rready_i = 0;
   m.s_axil_awprot_i = m.s_axil_arprot_i = 0;
-  m.probe_i = m.estop_i = 0;
-  m.rst_ni = 0;
-  for (int i = 0; i < 2; ++i) {
-    m.clk_i = 0;
-    m.eval();
-    shadow.before_edge(m);
-    m.clk_i = 1;
-    m.eval();
-  }
-  m.rst_ni = 1;
+  bus::reset_soc(m, [&](Model& mm) { shadow.before_edge(mm); });
   int aw = 0, wd = 0, ar = 0, b = 0, r = 0, two_in_flight = 0;
   int outstanding = 0;
   for (uint64_t c = 1; c <= 40000; ++c) {
