@@ -533,6 +533,15 @@ def r_soc_tests(_):
                 d["random_ops"], counts(a["random"]), counts(b["random"])), "", source(d)]
 
 
+def r_profile_ruckig(_):
+    """docs/profile.md: the feed profile's move times against Ruckig's."""
+    d = load("profile_ruckig.json")
+    pct = lambda x: "%+.3f %%" % (100 * x)
+    rows = [["%d %s" % (d[k]["n"], what)] + [pct(d[k][q]) for q in ("min", "median", "p90", "max")]
+            for k, what in (("rest_to_rest", "rest to rest"), ("end_speed", "to an end speed"))]
+    return table(["moves", "min", "median", "p90", "max"], rows) + ["", source(d)]
+
+
 def r_soc_synth(_):
     """docs/soc.md: motion_soc's synthesis (motion_soc_axil, default parameters)."""
     d = load("soc.json")["synth"]
@@ -604,6 +613,7 @@ RENDERERS = {
     "soc-timing": ("docs/data/soc.json", r_soc_timing),
     "soc-tests": ("docs/data/soc.json", r_soc_tests),
     "soc-synth": ("docs/data/soc.json", r_soc_synth),
+    "profile-ruckig": ("docs/data/profile_ruckig.json", r_profile_ruckig),
 }
 
 
