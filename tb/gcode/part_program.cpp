@@ -560,6 +560,10 @@ PartProgramRun run_part_program(const PartProgramSetup& setup) {
                  setup.profile_window,
                  profile_feed->moves_taken()};
     if (profile_feed->failed()) r.profile_failures.push_back(profile_feed->failure());
+    if (profile_feed->stranded() && !r.results.empty() && r.results.front().timed_out)
+      r.profile_failures.push_back(
+          "the feed profile came to rest with motion_top still busy: the step/dir stage "
+          "stalled the engine behind the profile's distance");
     // The machine's limits, within the estimator's tolerance, on every axis and the path.
     for (const KinematicRow& row : r.kinematics.rows) {
       const std::pair<const char*, const KinematicPeak*> peaks[] = {

@@ -85,11 +85,18 @@ void ProfilePlanner::push(const models::MotionCommand& c) {
   const double f = build_.clock_hz;
   double v = std::min(f, static_cast<double>(c.feed) * f / std::ldexp(1.0, feed_w_));
   if (c.feed == 0) v = f;
+  // The step/dir stage must never stall the engine: the profile's distance
+  // runs on whether or not the engine keeps up. An axis steps at most once
+  // per step_len + step_space clocks, and a feed tick can come a clock early.
+  const StepTiming& tm = machine_.timing;
+  const double pulse_clocks = static_cast<double>(std::max<int64_t>(tm.step_len, 1) +
+                                                  std::max<int64_t>(tm.step_space, 1) + 1);
   const auto axis_cap = [&](int i, double steps_per_op) {
     const AxisLimits& l = machine_.limits[static_cast<size_t>(i)];
     const double spu = static_cast<double>(machine_.steps_per_unit[static_cast<size_t>(i)]);
     if (steps_per_op > 0 && std::isfinite(l.velocity))
       v = std::min(v, l.velocity * spu / steps_per_op);
+    if (steps_per_op > 0) v = std::min(v, f / (pulse_clocks * steps_per_op));
   };
   if (c.kind == models::MotionKind::kLine) {
     for (int i = 0; i < axes_; ++i) {

@@ -205,7 +205,8 @@ class Bench {
         }
         break;
     }
-    if (r.cycles > budget_) {
+    if (r.cycles > budget_ ||
+        (options_.profile_feed && last_busy_ && options_.profile_feed->stranded())) {
       r.timed_out = true;
       end_case();
     }

@@ -88,6 +88,7 @@ uint64_t ProfileFeed::clock() {
     ++taken_;
   }
   ++clocks_;
+  rest_clocks_ = done_ && !h.busy() ? rest_clocks_ + 1 : 0;
   return feed;
 }
 

@@ -39,6 +39,10 @@ class ProfileFeed {
   uint64_t clocks() const { return clocks_; }
   bool busy() const;
   bool source_done() const { return done_; }
+  // Every move was taken and the profile has been at rest for 4 ticks: an
+  // engine still busy behind it will never finish (it fell behind, stalled
+  // by its step/dir stage, and the profile's distance ran out first).
+  bool stranded() const { return rest_clocks_ > 4 * 1024; }
 
  private:
   struct Faces;
@@ -46,7 +50,7 @@ class ProfileFeed {
   std::function<bool(ProfileWords&)> next_;
   ProfileWords offered_;
   bool valid_ = false, done_ = false;
-  uint64_t taken_ = 0, clocks_ = 0;
+  uint64_t taken_ = 0, clocks_ = 0, rest_clocks_ = 0;
   std::string failure_;
 };
 
