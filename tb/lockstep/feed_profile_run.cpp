@@ -5,17 +5,13 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "hls/feed_profile.h"
-#include "tb/lockstep/profile_feed.h"
+#include "tb/lockstep/harness_profile.h"
 
 namespace hwinterp::tb {
 namespace {
 
-// The harness's build of the block: 24-bit feed words, 48 speed bits, ticks
-// of 1024 clocks (20.48 us at 50 MHz), moving sums up to 1024 ticks (A/J up
-// to 21 ms at 50 MHz), 16-bit levels, 28-bit moves.
-using Profile = hls::FeedProfile<kProfileFeedW, 48, 10, 10, 16, 28>;
-constexpr int kTickClocks = 1024;
+using Profile = HarnessProfile;
+constexpr int kTickClocks = 1 << kProfileTickW;
 constexpr uint64_t kFull = uint64_t(1) << kProfileFeedW;
 constexpr uint64_t kMaxClocks = uint64_t(1) << 36;
 
@@ -23,10 +19,10 @@ constexpr uint64_t kMaxClocks = uint64_t(1) << 36;
 
 models::ProfileBuild feed_profile_build(double clock_hz) {
   models::ProfileBuild b;
-  b.spd_w = 48;
-  b.tick_w = 10;
-  b.len_w = 10;
-  b.lvl_w = 16;
+  b.spd_w = kProfileSpdW;
+  b.tick_w = kProfileTickW;
+  b.len_w = kProfileLenW;
+  b.lvl_w = kProfileLvlW;
   b.clock_hz = clock_hz;
   return b;
 }

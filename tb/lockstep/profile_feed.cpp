@@ -3,12 +3,12 @@
 #include <sstream>
 
 #include "Vfeed_profile_harness_cc.h"
-#include "hls/feed_profile.h"
+#include "tb/lockstep/harness_profile.h"
 #include "verilated.h"
 
 namespace hwinterp::tb {
 
-using Profile = hls::FeedProfile<kProfileFeedW, 48, 10, 10, 16, 28>;
+using Profile = HarnessProfile;
 
 struct ProfileFeed::Faces {
   VerilatedContext context;
@@ -45,6 +45,8 @@ ProfileFeed::~ProfileFeed() {
 }
 
 bool ProfileFeed::busy() const { return f_->hls.busy(); }
+
+bool ProfileFeed::stranded() const { return rest_clocks_ > (uint64_t(4) << kProfileTickW); }
 
 uint64_t ProfileFeed::clock() {
   auto& r = *f_->rtl;

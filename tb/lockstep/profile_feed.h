@@ -42,7 +42,7 @@ class ProfileFeed {
   // Every move was taken and the profile has been at rest for 4 ticks: an
   // engine still busy behind it will never finish (it fell behind, stalled
   // by its step/dir stage, and the profile's distance ran out first).
-  bool stranded() const { return rest_clocks_ > 4 * 1024; }
+  bool stranded() const;
 
  private:
   struct Faces;
