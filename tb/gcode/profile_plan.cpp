@@ -91,12 +91,15 @@ void ProfilePlanner::push(const models::MotionCommand& c) {
   const StepTiming& tm = machine_.timing;
   const double pulse_clocks = static_cast<double>(std::max<int64_t>(tm.step_len, 1) +
                                                   std::max<int64_t>(tm.step_space, 1) + 1);
+  // An axis with s steps per operation on average steps after floor(1/s)
+  // operations at the least (a DDA's or a PPC's steps are spread, not evenly
+  // spaced), so the stall cap counts that gap, not the average.
   const auto axis_cap = [&](int i, double steps_per_op) {
     const AxisLimits& l = machine_.limits[static_cast<size_t>(i)];
     const double spu = static_cast<double>(machine_.steps_per_unit[static_cast<size_t>(i)]);
-    if (steps_per_op > 0 && std::isfinite(l.velocity))
-      v = std::min(v, l.velocity * spu / steps_per_op);
-    if (steps_per_op > 0) v = std::min(v, f / (pulse_clocks * steps_per_op));
+    if (steps_per_op <= 0) return;
+    if (std::isfinite(l.velocity)) v = std::min(v, l.velocity * spu / steps_per_op);
+    v = std::min(v, f * std::floor(1 / steps_per_op) / pulse_clocks);
   };
   if (c.kind == models::MotionKind::kLine) {
     for (int i = 0; i < axes_; ++i) {
