@@ -67,6 +67,10 @@ int run_gcode(int argc, char** argv, int first) {
               "machine file's `profile`: moves follow its jerk-limited speed within the "
               "machine's max_accel and max_jerk")
       .option("profile-window", "N", "commands the profile's planner looks ahead", "16")
+      .option("feed-hold", "AT:FOR",
+              "with a profile: feed hold from AT seconds of the run for FOR seconds, a "
+              "controlled stop along the path within the limits, then the planned profile "
+              "resumes; the report gives the distance and time to rest")
       .option("moves-csv", "FILE", "one row per motion move: programmed end, lattice end reached")
       .option("step-times", "FILE",
               "every step pulse on the wire as CSV: clock,axis,dir (the clock of its rising "
@@ -103,6 +107,18 @@ int run_gcode(int argc, char** argv, int first) {
   if (args.given("profile"))
     setup.machine.profile = gcode::parse_profile(args.str("profile"), "--profile");
   setup.profile_window = static_cast<size_t>(args.integer("profile-window", 1, 4096));
+  if (args.given("feed-hold")) {
+    const std::string v = args.str("feed-hold");
+    const size_t colon = v.find(':');
+    if (colon == std::string::npos)
+      throw UsageError("--feed-hold: '" + v + "' is not AT:FOR (seconds, e.g. 2.5:0.5)");
+    setup.hold_at_s = cli::parse_real(v.substr(0, colon), "--feed-hold AT");
+    setup.hold_for_s = cli::parse_real(v.substr(colon + 1), "--feed-hold FOR");
+    if (!(setup.hold_at_s >= 0) || !(setup.hold_for_s > 0))
+      throw UsageError("--feed-hold: '" + v + "' needs AT >= 0 and FOR > 0 seconds");
+    if (setup.machine.profile == gcode::ProfileKind::kOff)
+      throw UsageError("--feed-hold: the hold is the feed profile's; the profile is off");
+  }
   if (!setup.bus.empty() && setup.machine.profile != gcode::ProfileKind::kOff)
     throw UsageError(std::string("--bus ") + setup.bus + ": motion_soc has no feed profile yet; " +
                      "run it with --profile off (the machine's profile is " +

@@ -57,6 +57,8 @@ bool CanonReader::next(Move& m) {
   while (src_.next(line)) {
     ++stats_.lines;
     if (run_line(line, m)) {
+      m.stop_before = stop_pending_;
+      stop_pending_ = false;
       stats_.count(m);
       return true;
     }
@@ -215,6 +217,7 @@ bool CanonReader::run_line(const std::string& line, Move& m) {
           src_.fail(cmd + " with a non-zero value (" + args[n] +
                     ") would shift the path; moves are read in program coordinates, in " + shown_);
     }
+    if (cmd == "PROGRAM_STOP" || cmd == "OPTIONAL_PROGRAM_STOP") stop_pending_ = true;
     ++stats_.ignored_commands[cmd];
     return false;
   }

@@ -61,7 +61,8 @@ class CanonReader : public MoveSource {
   bool inch_ = false;
   Plane plane_ = Plane::kXY;
   double feed_mm_ = 0;
-  std::string shown_;  // the line, for messages
+  bool stop_pending_ = false;  // a PROGRAM_STOP or OPTIONAL_PROGRAM_STOP since the last move
+  std::string shown_;          // the line, for messages
 };
 
 }  // namespace hwinterp::gcode

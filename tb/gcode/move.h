@@ -39,6 +39,10 @@ struct Move {
   // turns (P word). Zero for other moves.
   int rotation = 0;
   double feed = 0;  // mm/min in force (0 if none); traverses keep the last F too but it is unused
+  // A program stop (M0, M1; canon PROGRAM_STOP, OPTIONAL_PROGRAM_STOP) came
+  // between the move before and this one: the machine is at rest before it
+  // (the feed profile plans an exact stop there).
+  bool stop_before = false;
   uint64_t line =
       0;  // 1-based source line number (ngc: the file's line; canon: the canon line number)
 };

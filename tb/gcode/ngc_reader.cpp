@@ -353,6 +353,8 @@ bool NgcReader::execute(const Block& b, Move& m) {
       arc(b, motion == 20, end, m);
     }
     m.end = end;
+    m.stop_before = stop_pending_;
+    stop_pending_ = false;
     pos_ = end;
     finish(m);
     moved = true;
@@ -361,6 +363,7 @@ bool NgcReader::execute(const Block& b, Move& m) {
   if (b.m_stop.given()) {
     ++stats_.words["M" + std::to_string(b.m_stop.code)];
     if (b.m_stop.code == 2 || b.m_stop.code == 30) ended_ = true;
+    if (b.m_stop.code == 0 || b.m_stop.code == 1) stop_pending_ = true;  // after this line's move
   }
   return moved;
 }

@@ -78,6 +78,7 @@ class NgcReader : public MoveSource {
   bool started_ = false;  // a non-blank line was read
   bool percent_ = false;  // the program opened with '%'
   bool ended_ = false;
+  bool stop_pending_ = false;  // an M0 or M1 since the last move
 };
 
 }  // namespace hwinterp::gcode

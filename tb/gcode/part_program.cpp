@@ -489,7 +489,8 @@ PartProgramRun run_part_program(const PartProgramSetup& setup) {
             if (plan_finished) return false;
             models::MotionCommand mc;
             if (plan_compiler->next(mc)) {
-              planner->push(mc);
+              planner->push(mc,
+                            plan_compiler->info().number == 1 && plan_compiler->move().stop_before);
             } else {
               planner->finish();
               plan_finished = true;
@@ -498,6 +499,13 @@ PartProgramRun run_part_program(const PartProgramSetup& setup) {
           w = {pc.ops, pc.target, pc.end};
           return true;
         });
+  }
+
+  if (profile_feed && setup.hold_at_s >= 0) {
+    const double hz = static_cast<double>(setup.machine.clock_hz);
+    profile_feed->hold_between(
+        static_cast<uint64_t>(std::llround(setup.hold_at_s * hz)),
+        static_cast<uint64_t>(std::llround((setup.hold_at_s + setup.hold_for_s) * hz)));
   }
 
   // One case from the origin, the machine's step/dir timing, feed_i running.
@@ -559,6 +567,23 @@ PartProgramRun run_part_program(const PartProgramSetup& setup) {
                  g.max_level,
                  setup.profile_window,
                  profile_feed->moves_taken()};
+    if (setup.hold_at_s >= 0) {
+      const tb::ProfileFeed::HoldStop& h = profile_feed->hold_stop();
+      const double hz = static_cast<double>(setup.machine.clock_hz);
+      r.profile.hold = true;
+      r.profile.hold_stopped = h.stopped;
+      r.profile.hold_at_s = setup.hold_at_s;
+      r.profile.hold_for_s = setup.hold_for_s;
+      r.profile.hold_speed = h.speed * hz;
+      r.profile.hold_ops = h.ops;
+      r.profile.hold_stop_s = static_cast<double>(h.clocks) / hz;
+      if (!h.began)
+        r.profile_failures.push_back("the feed hold at " + fmt("%.6g", setup.hold_at_s) +
+                                     " s came after the program's end");
+      else if (!h.stopped)
+        r.profile_failures.push_back("the feed hold did not bring the path to rest within its " +
+                                     fmt("%.6g", setup.hold_for_s) + " s");
+    }
     if (profile_feed->failed()) r.profile_failures.push_back(profile_feed->failure());
     if (profile_feed->stranded() && !r.results.empty() && r.results.front().timed_out)
       r.profile_failures.push_back(
@@ -631,6 +656,13 @@ std::string summary_table(const PartProgramSetup& setup, const PartProgramRun& r
                                            : std::to_string(run.profile_failures.size()) +
                                                  " failures: " + run.profile_failures.front()) +
              ")"});
+    if (p.hold)
+      s.add_row({"feed hold at " + fmt("%.6g", p.hold_at_s) + " s for " +
+                     fmt("%.6g", p.hold_for_s) + " s",
+                 p.hold_stopped ? "from " + fmt("%.6g", p.hold_speed) + " steps/s to rest in " +
+                                      fmt("%.4g", p.hold_ops) + " steps and " +
+                                      fmt("%.4g", p.hold_stop_s * 1e3) + " ms"
+                                : std::string("not at rest")});
   }
   s.add_row({"max contour error", fmt("%.6f", m.mm) + " mm = " + fmt("%.3f", m.steps) +
                                       " steps (move " + std::to_string(m.move) + ", line " +
@@ -758,6 +790,16 @@ Json report_json(const PartProgramSetup& setup, const PartProgramRun& run) {
     prof["window"] = pr.window;
     prof["moves"] = pr.moves;
     prof["time_s"] = static_cast<double>(r.cycles) / static_cast<double>(setup.machine.clock_hz);
+    if (pr.hold) {
+      Json h;
+      h["at_s"] = pr.hold_at_s;
+      h["for_s"] = pr.hold_for_s;
+      h["stopped"] = pr.hold_stopped;
+      h["speed_ops_per_s"] = pr.hold_speed;
+      h["stop_ops"] = pr.hold_ops;
+      h["stop_s"] = pr.hold_stop_s;
+      prof["hold"] = h;
+    }
     prof["failures"] = run.profile_failures;
   }
   report["profile"] = prof;

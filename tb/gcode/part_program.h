@@ -46,6 +46,9 @@ struct PartProgramSetup {
   std::ostream* kinematics_csv = nullptr;  // one row per estimator window; null: none
   double kinematics_window_s = 0.01;  // the kinematics estimator's window (tb/monitor/kinematics.h)
   size_t profile_window = 16;  // commands the profile planner looks ahead (machine.profile on)
+  // Feed hold (machine.profile on): the profile's hold input high from
+  // hold_at_s for hold_for_s seconds of the run; hold_at_s < 0: none.
+  double hold_at_s = -1, hold_for_s = 0;
   // After the lockstep run, the same program through motion_soc's register
   // interface (tb/bus/): "axi4lite" or "wishbone"; empty: not.
   std::string bus;
@@ -63,6 +66,10 @@ struct ProfileReport {
   uint32_t max_level = 0;
   size_t window = 0;
   uint64_t moves = 0;  // the profile's moves taken (one per command)
+  // The feed hold's stop, when one was asked for: the path speed when it
+  // began, and the distance and time to rest (tb/lockstep/profile_feed.h).
+  bool hold = false, hold_stopped = false;
+  double hold_at_s = 0, hold_for_s = 0, hold_speed = 0, hold_ops = 0, hold_stop_s = 0;
 };
 
 // One quantity's highest magnitude seen on the wire, beside its limit, in

@@ -78,7 +78,7 @@ uint32_t ProfilePlanner::brake_level(uint64_t ops, uint32_t next_end) const {
   return lo;
 }
 
-void ProfilePlanner::push(const models::MotionCommand& c) {
+void ProfilePlanner::push(const models::MotionCommand& c, bool stop_before) {
   Entry e;
   e.p.ops = models::motion_operations(c);
   const double n = static_cast<double>(e.p.ops);
@@ -147,9 +147,11 @@ void ProfilePlanner::push(const models::MotionCommand& c) {
                        static_cast<double>(machine_.steps_per_unit[static_cast<size_t>(i)]);
       vj = std::min(vj, a * tick_s_ / jump);
     }
-    prev.max_end =
-        std::min<double>({vj == kInf ? 1e300 : models::profile_level(regs_, vj),
-                          static_cast<double>(prev.p.target), static_cast<double>(e.p.target)});
+    prev.max_end = stop_before
+                       ? 0
+                       : std::min<double>({vj == kInf ? 1e300 : models::profile_level(regs_, vj),
+                                           static_cast<double>(prev.p.target),
+                                           static_cast<double>(e.p.target)});
   }
   q_.push_back(e);
   plan_back();

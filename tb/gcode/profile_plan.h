@@ -21,6 +21,8 @@
 // of the axis's acceleration (A_i * tick): what the profile itself changes
 // the speed by in a tick. So corners are exact stops unless the moves join
 // tangentially (arc pieces, split lines, tangent arcs and lines).
+// A program stop (M0, M1) between two moves is an exact stop too, and the
+// program ends at rest (M2, M30).
 //
 // Look-ahead. A command is planned once `window` commands after it are known
 // (or the program ended: the last ends at rest): backward over the window,
@@ -57,9 +59,11 @@ class ProfilePlanner {
   double accel() const { return accel_; }  // the profile's acceleration, operations/s^2
   double jerk() const { return jerk_; }    // and jerk, operations/s^3
 
-  void push(const models::MotionCommand& c);  // the next command, in program order
-  void finish();                              // the program ended
-  bool pop(ProfileCommand& out);              // the next planned command, if any is final
+  // The next command, in program order; stop_before: the machine is at rest
+  // before it (M0, M1: an exact stop at the junction).
+  void push(const models::MotionCommand& c, bool stop_before = false);
+  void finish();                  // the program ended
+  bool pop(ProfileCommand& out);  // the next planned command, if any is final
 
  private:
   struct Entry {

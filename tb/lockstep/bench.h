@@ -205,7 +205,9 @@ class Bench {
         }
         break;
     }
-    if (r.cycles > budget_ ||
+    // A feed hold of the profile pauses the engine: its clocks are extra.
+    const uint64_t held = options_.profile_feed ? options_.profile_feed->hold_clocks() : 0;
+    if (r.cycles > budget_ + held ||
         (options_.profile_feed && last_busy_ && options_.profile_feed->stranded())) {
       r.timed_out = true;
       end_case();

@@ -1,5 +1,6 @@
 #include "tb/lockstep/profile_feed.h"
 
+#include <algorithm>
 #include <sstream>
 
 #include "Vfeed_profile_harness_cc.h"
@@ -44,6 +45,11 @@ ProfileFeed::~ProfileFeed() {
   Verilated::threadContextp(Verilated::defaultContextp());
 }
 
+void ProfileFeed::hold_between(uint64_t from, uint64_t to) {
+  hold_from_ = from;
+  hold_to_ = std::max(from, to);
+}
+
 bool ProfileFeed::busy() const { return f_->hls.busy(); }
 
 bool ProfileFeed::stranded() const { return rest_clocks_ > (uint64_t(4) << kProfileTickW); }
@@ -73,16 +79,28 @@ uint64_t ProfileFeed::clock() {
   cmd.target = offered_.target;
   cmd.end = offered_.end;
   const bool take = valid_ && h.cmd_ready();
+  const bool hold = clocks_ >= hold_from_ && clocks_ < hold_to_;
+  if (hold && !stop_.stopped) {
+    const double word =
+        static_cast<double>(feed) / static_cast<double>(uint64_t(1) << kProfileFeedW);
+    if (!stop_.began) stop_ = {true, false, word, 0, 0};
+    if (h.state().v == 0) {
+      stop_.stopped = true;
+    } else {
+      stop_.ops += word;
+      ++stop_.clocks;
+    }
+  }
   r.q_i = f_->q;
   r.len_i = f_->len;
   r.cmd_valid_i = valid_;
   r.cmd_ops_i = static_cast<uint32_t>(offered_.ops);
   r.cmd_target_i = offered_.target;
   r.cmd_end_i = offered_.end;
-  r.hold_i = 0;
+  r.hold_i = hold;
   r.clk_i = 1;
   r.eval();
-  h.clock(valid_, cmd, false, f_->q, f_->len);
+  h.clock(valid_, cmd, hold, f_->q, f_->len);
   r.clk_i = 0;
   r.eval();
   if (take) {

@@ -39,6 +39,21 @@ class ProfileFeed {
   uint64_t clocks() const { return clocks_; }
   bool busy() const;
   bool source_done() const { return done_; }
+  // Feed hold (the block's hold_i) on the clocks [from, to): a controlled
+  // stop along the path within the profile's limits, then the planned
+  // profile goes on. One window a run.
+  void hold_between(uint64_t from, uint64_t to);
+  // The stop of that hold: the speed when it began, the operations and
+  // clocks from its first clock to the first clock at speed 0 (stopped is
+  // false while the speed has not reached 0, or when no hold began).
+  struct HoldStop {
+    bool began = false, stopped = false;
+    double speed = 0;  // operations per clock when the hold began
+    double ops = 0;    // operations travelled until speed 0
+    uint64_t clocks = 0;
+  };
+  const HoldStop& hold_stop() const { return stop_; }
+  uint64_t hold_clocks() const { return hold_to_ - hold_from_; }
   // Every move was taken and the profile has been at rest for 4 ticks: an
   // engine still busy behind it will never finish (it fell behind, stalled
   // by its step/dir stage, and the profile's distance ran out first).
@@ -51,6 +66,8 @@ class ProfileFeed {
   ProfileWords offered_;
   bool valid_ = false, done_ = false;
   uint64_t taken_ = 0, clocks_ = 0, rest_clocks_ = 0;
+  uint64_t hold_from_ = 0, hold_to_ = 0;
+  HoldStop stop_;
   std::string failure_;
 };
 

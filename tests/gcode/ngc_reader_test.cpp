@@ -266,5 +266,29 @@ TEST(NgcReader, RadiusArcsPickTheShorterOrTheLongerSide) {
   EXPECT_EQ(r.moves[4].rotation, 1);
 }
 
+// M0 and M1 stop the machine after their line's move: the next move is
+// marked stop_before (the feed profile plans an exact stop there), as rs274
+// prints PROGRAM_STOP / OPTIONAL_PROGRAM_STOP between the two; the canon
+// reader marks the same moves.
+TEST(ProgramStops, MarkTheMoveAfterThemInBothReaders) {
+  const std::string program = "G21 G90\nG1 X1 F600\nM0\nG1 X2\nG1 X3 M1\nG1 Y1\nM2\n";
+  const std::string rs274 =
+      "    1 N..... SET_FEED_RATE(600.0000)\n"
+      "    2 N..... STRAIGHT_FEED(1.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+      "    3 N..... PROGRAM_STOP()\n"
+      "    4 N..... STRAIGHT_FEED(2.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+      "    5 N..... STRAIGHT_FEED(3.0000, 0.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+      "    6 N..... OPTIONAL_PROGRAM_STOP()\n"
+      "    7 N..... STRAIGHT_FEED(3.0000, 1.0000, 0.0000, 0.0000, 0.0000, 0.0000)\n"
+      "    8 N..... PROGRAM_END()\n";
+  for (const auto& r : {ngc(program), test::canon(rs274)}) {
+    ASSERT_EQ(r.moves.size(), 4u);
+    EXPECT_FALSE(r.moves[0].stop_before);
+    EXPECT_TRUE(r.moves[1].stop_before);
+    EXPECT_FALSE(r.moves[2].stop_before);
+    EXPECT_TRUE(r.moves[3].stop_before);
+  }
+}
+
 }  // namespace
 }  // namespace hwinterp::gcode

@@ -77,8 +77,8 @@ TEST_P(GcodeProgram, RunsCleanFromNgcAndCanonToTheSameEnds) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Committed, GcodeProgram,
-                         ::testing::Values("arcs", "engraving", "incremental", "inch", "modal",
-                                           "words"));
+                         ::testing::Values("arcs", "corners", "engraving", "helix", "incremental",
+                                           "inch", "modal", "words"));
 
 // SystemC mode runs the same program to the same result as direct mode.
 TEST(GcodeCli, SystemcModeMatchesDirect) {
@@ -191,57 +191,6 @@ TEST(GcodeCli, StepTimesAddUpToTheEndPoint) {
   EXPECT_GT(x["accel"]["max"].get<double>(), 0);
   EXPECT_GT(k["path"]["speed"]["max"].get<double>(), 0);
   EXPECT_NE(r.out.find("peak speed, accel, jerk: X"), std::string::npos) << r.out;
-}
-
-// The step stream's clocks, grouped: one group per clock with the pulses
-// (axis, dir) that rose on it, in order. Two runs visit the same lattice
-// points in the same order exactly when their groups are equal.
-std::vector<std::string> step_groups(const std::string& csv) {
-  const auto rows = read_csv(csv);
-  std::vector<std::string> groups;
-  std::string clock;
-  for (size_t i = 1; i < rows.size(); ++i) {
-    if (rows[i][0] != clock || groups.empty()) groups.emplace_back();
-    clock = rows[i][0];
-    groups.back() += rows[i][1] + rows[i][2] + " ";
-  }
-  return groups;
-}
-
-// With the jerk-limited feed profile (machine_profile.json: profile scurve):
-// the profile's two faces agree on every clock, the step stream stays within
-// every axis's and the path's limits (the run fails otherwise), it visits the
-// very lattice points of the run without a profile, in order, and it takes
-// longer than that run, which jumps to full speed.
-TEST(GcodeCli, TheFeedProfileKeepsTheLimitsAndTheLatticePoints) {
-  const std::string dir = scratch_dir("gcode_profile");
-  const std::string base =
-      "gcode " + kData + "modal.ngc --mode direct --machine " + kData + "machine_profile.json ";
-  const CliResult on =
-      run_hwinterp(base + "--step-times " + dir + "/on.csv --json " + dir + "/on.json");
-  ASSERT_EQ(on.code, 0) << on.out << on.err;
-  const CliResult off = run_hwinterp(base + "--profile off --step-times " + dir +
-                                     "/off.csv --json " + dir + "/off.json");
-  ASSERT_EQ(off.code, 0) << off.out << off.err;
-  const auto j_on = nlohmann::json::parse(slurp(dir + "/on.json"));
-  const auto j_off = nlohmann::json::parse(slurp(dir + "/off.json"));
-  EXPECT_EQ(j_on["profile"]["kind"], "scurve");
-  EXPECT_EQ(j_off["profile"]["kind"], "off");
-  EXPECT_EQ(j_on["profile"]["moves"].get<uint64_t>(), j_on["commands"].get<uint64_t>());
-  EXPECT_TRUE(j_on["profile"]["failures"].empty()) << j_on["profile"]["failures"];
-  // Within the limits on every axis and the path, as the run's own check says.
-  for (const auto& [name, row] : j_on["kinematics"]["axes"].items())
-    for (const char* q : {"speed", "accel", "jerk"})
-      EXPECT_LE(row[q]["max"].get<double>(),
-                row[q]["limit"].get<double>() + row[q]["tolerance"].get<double>())
-          << name << " " << q;
-  // Without the profile the same program breaks them (the check is not idle).
-  EXPECT_GT(j_off["kinematics"]["axes"]["X"]["accel"]["max"].get<double>(),
-            j_off["kinematics"]["axes"]["X"]["accel"]["limit"].get<double>());
-  const auto g_on = step_groups(dir + "/on.csv"), g_off = step_groups(dir + "/off.csv");
-  ASSERT_FALSE(g_on.empty());
-  EXPECT_EQ(g_on, g_off);
-  EXPECT_GT(j_on["profile"]["time_s"].get<double>(), j_off["cycles"].get<double>() / 500000.0);
 }
 
 // Bad input: exit 2 with the file, line and word, and nothing runs.
