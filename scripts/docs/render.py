@@ -30,6 +30,9 @@ imported figure), so a later run can refresh it.
                    gcode      build/reports/gcode/*.json: hwinterp gcode
                               tests/data/gcode/<program>.ngc --mode direct --json FILE,
                               one FILE per committed program (several FILEs)
+                   profile_programs  the same with --machine
+                              tests/data/gcode/machine_profile.json --feed programmed
+                              (the profile on), one FILE per program
                    back_to_back  hwinterp cosim --core C --job
                               docs/data/back_to_back.job --mode direct --json FILE,
                               for fixed_ratio, dda_line, ppc_line (three FILEs)
@@ -542,6 +545,26 @@ def r_profile_ruckig(_):
     return table(["moves", "min", "median", "p90", "max"], rows) + ["", source(d)]
 
 
+def r_profile_programs(_):
+    """docs/profile.md: the committed programs at their programmed feeds with the S-curve."""
+    d = load("profile_programs.json")
+    rows = []
+    for p in d["programs"]:
+        path = p["path"]
+        worst = max(p["axes"], key=lambda a: a["accel_share"])
+        jworst = max(p["axes"], key=lambda a: a["jerk_share"])
+        rows.append(["`%s`" % p["program"], "%.3f s" % p["programmed_seconds"],
+                     "%.3f s" % p["profile_seconds"],
+                     "%.3g mm/s, %.4g mm/s^2, %.4g mm/s^3" % (path["speed"], path["accel"], path["jerk"]),
+                     "%s %.0f %%" % (worst["axis"], 100 * worst["accel_share"]),
+                     "%s %.0f %%" % (jworst["axis"], 100 * jworst["jerk_share"]),
+                     grp(p["clocks"]), "yes" if p["passed"] else "NO"])
+    return table(["program", "time at F, no acceleration", "time at the S-curve",
+                  "path peaks: speed, accel, jerk", "highest axis accel / its limit",
+                  "highest axis jerk / its limit", "clocks", "within the limits, same points"],
+                 rows) + ["", d["what"] + ".", "", source(d)]
+
+
 def r_soc_synth(_):
     """docs/soc.md: motion_soc's synthesis (motion_soc_axil, default parameters)."""
     d = load("soc.json")["synth"]
@@ -614,6 +637,7 @@ RENDERERS = {
     "soc-tests": ("docs/data/soc.json", r_soc_tests),
     "soc-synth": ("docs/data/soc.json", r_soc_synth),
     "profile-ruckig": ("docs/data/profile_ruckig.json", r_profile_ruckig),
+    "profile-programs": ("docs/data/profile_programs.json", r_profile_programs),
 }
 
 
@@ -766,6 +790,43 @@ def import_gcode(files, opts):
                 "machine_default.json), full feed", "programs": progs}, opts)
 
 
+def import_profile_programs(files, opts):
+    progs = []
+    for path in files:
+        r = read_json(path)
+        try:
+            k = r["kinematics"]
+            prof = r["profile"]
+            if prof["kind"] == "off":
+                fail("%s: a run without the feed profile" % path)
+            axes = []
+            for name, a in k["axes"].items():
+                if not a["speed"]["max"]:
+                    continue
+                axes.append({"axis": name,
+                             "accel_share": a["accel"]["max"] / a["accel"]["limit"],
+                             "jerk_share": a["jerk"]["max"] / a["jerk"]["limit"]})
+            progs.append({
+                "program": os.path.basename(r["program"]),
+                "variant": r["variant"], "mode": r["mode"], "kind": prof["kind"],
+                "passed": r["passed"] and not prof["failures"],
+                "programmed_seconds": r["programmed_time_s"],
+                "profile_seconds": prof["time_s"], "clocks": r["simulated_clocks"],
+                "path": {q: k["path"][q]["max"] for q in ("speed", "accel", "jerk")},
+                "axes": axes,
+            })
+        except (KeyError, TypeError, ZeroDivisionError) as e:
+            fail("%s: not a hwinterp gcode report with a profile (%s)" % (path, e))
+    return stamp("hwinterp gcode tests/data/gcode/<program>.ngc --machine "
+                 "tests/data/gcode/machine_profile.json --feed programmed --json FILE "
+                 "(ctest -L long -R GcodeProfileAll)", {
+                     "what": "the committed programs at their programmed feeds with the S-curve "
+                             "profile on tests/data/gcode/machine_profile.json (500 kHz), the "
+                             "kinematics estimated from the step stream in 10 ms windows; "
+                             "\"same points\": the same lattice points in the same order as "
+                             "the run without the profile", "programs": progs}, opts)
+
+
 def import_back_to_back(files, opts):
     runs = []
     for path in files:
@@ -836,10 +897,12 @@ def import_planner(files, opts):
 
 
 IMPORTS = {"regress": import_regress, "reproduce": import_reproduce, "gcode": import_gcode,
+           "profile_programs": import_profile_programs,
            "back_to_back": import_back_to_back, "log_stepper": import_log_stepper,
            "planner": import_planner}
 # The data file each import writes.
-IMPORT_FILES = {"gcode": "gcode_programs.json", "planner": "planner_bench.json"}
+IMPORT_FILES = {"gcode": "gcode_programs.json", "planner": "planner_bench.json",
+                "profile_programs": "profile_programs.json"}
 
 
 # ---------------------------------------------------------------- main

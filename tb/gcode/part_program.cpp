@@ -24,6 +24,7 @@
 #include "tb/gcode/contour.h"
 #include "tb/gcode/limits.h"
 #include "tb/gcode/profile_plan.h"
+#include "tb/gcode/soc_writes.h"
 #include "tb/lockstep/bench_run.h"
 #include "tb/lockstep/feed_profile_run.h"
 #include "tb/lockstep/profile_feed.h"
@@ -457,6 +458,11 @@ PartProgramRun run_part_program(const PartProgramSetup& setup) {
     auto source = open_source(setup);
     check_reach(*source, setup.machine, l.param("POS_W"), l.variant, setup.program);
   }
+  if (!setup.soc_writes_path.empty()) {
+    auto src = open_source(setup);
+    write_soc_writes(*src, setup.machine, widths, setup.feed_mode, setup.program, l.variant,
+                     setup.soc_writes_path);
+  }
   auto source = open_source(setup);
   const bool profiled = setup.machine.profile != ProfileKind::kOff;
   auto prog = std::make_shared<Program>(std::move(source), setup.machine, widths, setup.feed_mode,
@@ -566,17 +572,16 @@ PartProgramRun run_part_program(const PartProgramSetup& setup) {
                  planner->jerk(),
                  g.max_level,
                  setup.profile_window,
-                 profile_feed->moves_taken()};
+                 profile_feed->moves_taken(),
+                 false,
+                 {}};
     if (setup.hold_at_s >= 0) {
       const tb::ProfileFeed::HoldStop& h = profile_feed->hold_stop();
       const double hz = static_cast<double>(setup.machine.clock_hz);
-      r.profile.hold = true;
-      r.profile.hold_stopped = h.stopped;
-      r.profile.hold_at_s = setup.hold_at_s;
-      r.profile.hold_for_s = setup.hold_for_s;
-      r.profile.hold_speed = h.speed * hz;
-      r.profile.hold_ops = h.ops;
-      r.profile.hold_stop_s = static_cast<double>(h.clocks) / hz;
+      r.profile.held = true;
+      r.profile.hold = {setup.hold_at_s, setup.hold_for_s,
+                        h.stopped,       h.speed * hz,
+                        h.ops,           static_cast<double>(h.clocks) / hz};
       if (!h.began)
         r.profile_failures.push_back("the feed hold at " + fmt("%.6g", setup.hold_at_s) +
                                      " s came after the program's end");
@@ -656,13 +661,14 @@ std::string summary_table(const PartProgramSetup& setup, const PartProgramRun& r
                                            : std::to_string(run.profile_failures.size()) +
                                                  " failures: " + run.profile_failures.front()) +
              ")"});
-    if (p.hold)
-      s.add_row({"feed hold at " + fmt("%.6g", p.hold_at_s) + " s for " +
-                     fmt("%.6g", p.hold_for_s) + " s",
-                 p.hold_stopped ? "from " + fmt("%.6g", p.hold_speed) + " steps/s to rest in " +
-                                      fmt("%.4g", p.hold_ops) + " steps and " +
-                                      fmt("%.4g", p.hold_stop_s * 1e3) + " ms"
-                                : std::string("not at rest")});
+    if (p.held) {
+      const ProfileReport::Hold& h = p.hold;
+      s.add_row({"feed hold at " + fmt("%.6g", h.at_s) + " s for " + fmt("%.6g", h.for_s) + " s",
+                 h.stopped ? "from " + fmt("%.6g", h.speed_ops_per_s) +
+                                 " operations/s to rest in " + fmt("%.6g", h.stop_ops) +
+                                 " operations and " + fmt("%.4g", h.stop_s * 1e3) + " ms"
+                           : std::string("not at rest")});
+    }
   }
   s.add_row({"max contour error", fmt("%.6f", m.mm) + " mm = " + fmt("%.3f", m.steps) +
                                       " steps (move " + std::to_string(m.move) + ", line " +
@@ -790,16 +796,7 @@ Json report_json(const PartProgramSetup& setup, const PartProgramRun& run) {
     prof["window"] = pr.window;
     prof["moves"] = pr.moves;
     prof["time_s"] = static_cast<double>(r.cycles) / static_cast<double>(setup.machine.clock_hz);
-    if (pr.hold) {
-      Json h;
-      h["at_s"] = pr.hold_at_s;
-      h["for_s"] = pr.hold_for_s;
-      h["stopped"] = pr.hold_stopped;
-      h["speed_ops_per_s"] = pr.hold_speed;
-      h["stop_ops"] = pr.hold_ops;
-      h["stop_s"] = pr.hold_stop_s;
-      prof["hold"] = h;
-    }
+    if (pr.held) prof["hold"] = Json(nlohmann::json(pr.hold));  // its keys in name order
     prof["failures"] = run.profile_failures;
   }
   report["profile"] = prof;

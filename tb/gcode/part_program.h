@@ -49,6 +49,9 @@ struct PartProgramSetup {
   // Feed hold (machine.profile on): the profile's hold input high from
   // hold_at_s for hold_for_s seconds of the run; hold_at_s < 0: none.
   double hold_at_s = -1, hold_for_s = 0;
+  // The bus writes that stream the program's commands into motion_soc
+  // (tb/gcode/soc_writes.h); empty: none.
+  std::string soc_writes_path;
   // After the lockstep run, the same program through motion_soc's register
   // interface (tb/bus/): "axi4lite" or "wishbone"; empty: not.
   std::string bus;
@@ -66,11 +69,19 @@ struct ProfileReport {
   uint32_t max_level = 0;
   size_t window = 0;
   uint64_t moves = 0;  // the profile's moves taken (one per command)
-  // The feed hold's stop, when one was asked for: the path speed when it
-  // began, and the distance and time to rest (tb/lockstep/profile_feed.h).
-  bool hold = false, hold_stopped = false;
-  double hold_at_s = 0, hold_for_s = 0, hold_speed = 0, hold_ops = 0, hold_stop_s = 0;
+  // The feed hold's stop (--feed-hold): the path speed when it began, and
+  // the distance and time to rest (tb/lockstep/profile_feed.h).
+  struct Hold {
+    double at_s = 0, for_s = 0;
+    bool stopped = false;
+    double speed_ops_per_s = 0, stop_ops = 0, stop_s = 0;
+  };
+  bool held = false;  // a hold was asked for: `hold` is set
+  Hold hold;
 };
+// The JSON report's `profile.hold`: the fields once.
+NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(ProfileReport::Hold, at_s, for_s, stopped, speed_ops_per_s,
+                                   stop_ops, stop_s)
 
 // One quantity's highest magnitude seen on the wire, beside its limit, in
 // units (mm or deg) per s^k.
