@@ -69,11 +69,50 @@ struct HostCounts {
   bool events_read = false;
 };
 
+// One command's writes into the staging registers: every field the direct
+// lockstep drives (tb/cores/motion_top: to_own), lines included, so the core
+// sees the same payload; only the registers whose staged value changes, then
+// CMD_PUSH. put(addr, data) takes each write in order. Used by SocHost and
+// by `hwinterp gcode --soc-writes` (a replay for other test benches).
+class CommandStager {
+ public:
+  explicit CommandStager(int axes) : axes_(axes) { staged_.fill(0); }  // the reset values
+
+  template <class Put>
+  void stage(const models::MotionCommand& c, Put&& put) {
+    const auto write = [&](size_t reg, uint32_t addr, uint32_t v) {
+      if (staged_[reg] == v) return;
+      staged_[reg] = v;
+      put(addr, v);
+    };
+    const bool arc = c.kind == models::MotionKind::kArc;
+    for (int i = 0; i < axes_; ++i)
+      write(static_cast<size_t>(i), regs::kCmdDelta0 + 4u * static_cast<uint32_t>(i),
+            static_cast<uint32_t>(c.delta[static_cast<size_t>(i)]));
+    write(6, regs::kCmdCenter0, static_cast<uint32_t>(c.center[0]));
+    write(7, regs::kCmdCenter1, static_cast<uint32_t>(c.center[1]));
+    write(8, regs::kCmdEnd0, static_cast<uint32_t>(c.end[0]));
+    write(9, regs::kCmdEnd1, static_cast<uint32_t>(c.end[1]));
+    write(10, regs::kCmdOps, static_cast<uint32_t>(c.ops));
+    write(11, regs::kCmdFeed, c.feed);
+    // CMD_FLAGS: arc, plane, ccw; timed 0 (at once).
+    const uint32_t flags = (arc ? kArcBit : 0u) |
+                           (static_cast<uint32_t>(c.plane & 3) << kPlaneLsb) |
+                           (c.ccw ? kCcwBit : 0u);
+    write(12, regs::kCmdFlags, flags);
+    put(regs::kCmdPush, 1u);
+  }
+
+ private:
+  int axes_;
+  std::array<uint32_t, 13> staged_{};
+};
+
 // Src: bool next(models::MotionCommand&) per command (false at the end).
 template <class Src>
 class SocHost {
  public:
-  SocHost(Src& src, const SocSetup& s) : src_(src), setup_(s) {
+  SocHost(Src& src, const SocSetup& s) : src_(src), setup_(s), stager_(s.axes) {
     put_write(regs::kFeed, s.feed);
     put_write(regs::kStepLen, s.step_len);
     put_write(regs::kStepSpace, s.step_space);
@@ -82,7 +121,6 @@ class SocHost {
     put_write(regs::kStepType, 0);  // step/dir on every axis
     put_write(regs::kFifoLow, s.fifo_low);
     put_write(regs::kIrqEn, kLowWater);
-    staged_.fill(0);  // the staging registers' reset values
   }
 
   // The next transaction, if any now (false: nothing until a response, the
@@ -148,11 +186,6 @@ class SocHost {
 
  private:
   void put_write(uint32_t addr, uint32_t data) { q_[n_++] = BusTxn{true, addr, data, 0xF}; }
-  void stage(size_t reg, uint32_t addr, uint32_t v) {
-    if (staged_[reg] == v) return;
-    staged_[reg] = v;
-    put_write(addr, v);
-  }
   // The next command's writes (or, at the end, the read of EVENTS).
   bool refill() {
     n_ = i_ = 0;
@@ -163,24 +196,7 @@ class SocHost {
       q_[n_++] = BusTxn{false, regs::kEvents, 0, 0xF};
       return true;
     }
-    // Every field the direct lockstep drives (tb/cores/motion_top: to_own),
-    // lines included, so the core sees the same payload.
-    const bool arc = c.kind == models::MotionKind::kArc;
-    for (int i = 0; i < setup_.axes; ++i)
-      stage(static_cast<size_t>(i), regs::kCmdDelta0 + 4u * static_cast<uint32_t>(i),
-            static_cast<uint32_t>(c.delta[static_cast<size_t>(i)]));
-    stage(6, regs::kCmdCenter0, static_cast<uint32_t>(c.center[0]));
-    stage(7, regs::kCmdCenter1, static_cast<uint32_t>(c.center[1]));
-    stage(8, regs::kCmdEnd0, static_cast<uint32_t>(c.end[0]));
-    stage(9, regs::kCmdEnd1, static_cast<uint32_t>(c.end[1]));
-    stage(10, regs::kCmdOps, static_cast<uint32_t>(c.ops));
-    stage(11, regs::kCmdFeed, c.feed);
-    // CMD_FLAGS: arc, plane, ccw; timed 0 (at once).
-    const uint32_t flags = (arc ? kArcBit : 0u) |
-                           (static_cast<uint32_t>(c.plane & 3) << kPlaneLsb) |
-                           (c.ccw ? kCcwBit : 0u);
-    stage(12, regs::kCmdFlags, flags);
-    put_write(regs::kCmdPush, 1);
+    stager_.stage(c, [this](uint32_t addr, uint32_t v) { put_write(addr, v); });
     return true;
   }
 
@@ -188,7 +204,7 @@ class SocHost {
   SocSetup setup_;
   std::array<BusTxn, 16> q_{};  // this command's transactions
   size_t n_ = 0, i_ = 0;
-  std::array<uint32_t, 13> staged_{};
+  CommandStager stager_;
   uint32_t credit_ = 0;
   bool waiting_ = false;                       // a read whose answer decides what comes next
   bool clear_low_ = false, sleeping_ = false;  // the FIFO was full: wait for low water

@@ -67,6 +67,9 @@ int run_gcode(int argc, char** argv, int first) {
               "machine file's `profile`: moves follow its jerk-limited speed within the "
               "machine's max_accel and max_jerk")
       .option("profile-window", "N", "commands the profile's planner looks ahead", "16")
+      .option("soc-writes", "FILE",
+              "write the bus writes that stream the program's commands into motion_soc's "
+              "command FIFO, as JSON (tb/gcode/soc_writes.h), for a test bench of your own")
       .option("feed-hold", "AT:FOR",
               "with a profile: feed hold from AT seconds of the run for FOR seconds, a "
               "controlled stop along the path within the limits, then the planned profile "
@@ -129,9 +132,10 @@ int run_gcode(int argc, char** argv, int first) {
   // Every output can be written, or nothing runs.
   trace_from_args(args, setup.bench);
   setup.bench.progress_every = static_cast<uint64_t>(args.integer("progress", 0, INT64_MAX));
-  check_outputs_writable(args,
-                         {"moves-csv", "step-times", "plot", "plot-kinematics", "vcd", "fst"});
+  check_outputs_writable(
+      args, {"moves-csv", "step-times", "plot", "plot-kinematics", "vcd", "fst", "soc-writes"});
   if (args.given("step-times")) setup.bench.step_times_path = args.str("step-times");
+  if (args.given("soc-writes")) setup.soc_writes_path = args.str("soc-writes");
   std::unique_ptr<std::ofstream> moves_csv, points_csv;
   if (args.given("moves-csv")) moves_csv = std::make_unique<std::ofstream>(args.str("moves-csv"));
   const std::string points_path = args.given("plot") ? args.str("plot") + ".points.csv" : "";

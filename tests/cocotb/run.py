@@ -4,6 +4,10 @@ Verilator and runs the cocotb tests (tests/cocotb/test_motion_soc.py) through
 each bus.
 
 usage: tests/cocotb/run.py [--bus axil,wb] [--build-dir DIR] [--testcase NAME[,NAME]] [--seed N]
+                           [--hwinterp PATH]
+
+--hwinterp: the hwinterp executable the gcode_program test compiles its
+program with (default build/tb/hwinterp).
 
 Exit 0 when every test passes on every bus, 1 when one fails, 2 on bad
 usage. The Verilated model is rebuilt only when a source changed (make's
@@ -23,6 +27,7 @@ def main(argv):
     ap.add_argument("--build-dir", default=os.path.join(ROOT, "build", "cocotb"))
     ap.add_argument("--testcase", default=None)
     ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--hwinterp", default=os.path.join(ROOT, "build", "tb", "hwinterp"))
     a = ap.parse_args(argv)
     a.build_dir = os.path.abspath(a.build_dir)  # the tests run in tests/cocotb/
     buses = a.bus.split(",")
@@ -51,7 +56,8 @@ def main(argv):
     for bus in buses:
         results = runner.test(test_module="test_motion_soc", hdl_toplevel=top,
                               test_dir=HERE, build_dir=a.build_dir, testcase=a.testcase,
-                              seed=a.seed, extra_env={"SOC_BUS": bus},
+                              seed=a.seed, extra_env={"SOC_BUS": bus,
+                                                    "HWINTERP_EXE": os.path.abspath(a.hwinterp)},
                               results_xml=os.path.join(a.build_dir, f"results_{bus}.xml"),
                               log_file=os.path.join(a.build_dir, f"test_{bus}.log"))
         n, failed = get_results(results)

@@ -5,8 +5,11 @@ as SOC_BUS says; tests/cocotb/run.py builds and runs them.
 The register map comes from rtl/regs/motion_soc.rdl itself (systemrdl-compiler),
 so the reset and access tests cover every register the description has.
 """
+import json
 import os
 import random
+import subprocess
+import tempfile
 
 import cocotb
 from cocotb.clock import Clock
@@ -589,6 +592,72 @@ async def step_types(dut):
     assert min(edges["holds"]) >= step_len + step_space, edges["holds"]
     dut._log.info(f"step types: up/down pulses {step_len} clocks; quadrature states held "
                   f"{min(edges['holds'])} to {max(edges['holds'])} clocks")
+
+
+@cocotb.test()
+async def gcode_program(dut):
+    """A part program written through the bus: `hwinterp gcode --soc-writes`
+    compiles tests/data/gcode/modal.ngc (a 3-axis machine, 100 steps/mm, at
+    motion_top_n3's widths, which are motion_soc's but for FEED_W) into each
+    command's staging writes and CMD_PUSH, made by the host of the C++ bus run
+    (tb/bus/soc_host.h). They are written here in order, a push only when
+    FIFO_LEVEL says there is room; every command runs at full feed (CMD_FEED
+    1 << 16: this build's FEED_W is 16, the compile's 24). The step pulses on
+    the pins and the snapshot reach the program's end point exactly."""
+    exe = os.environ.get("HWINTERP_EXE", os.path.join(ROOT, "build", "tb", "hwinterp"))
+    assert os.access(exe, os.X_OK), f"no hwinterp at {exe} (set HWINTERP_EXE)"
+    tmp = tempfile.mkdtemp(prefix="cocotb_gcode_")
+    machine = os.path.join(tmp, "m3.json")
+    with open(machine, "w") as f:
+        json.dump({"axes": ["X", "Y", "Z"], "steps_per_unit": {"X": 100, "Y": 100, "Z": 100}}, f)
+    writes = os.path.join(tmp, "writes.json")
+    r = subprocess.run([exe, "gcode", os.path.join(ROOT, "tests", "data", "gcode", "modal.ngc"),
+                        "--machine", machine, "--variant", "motion_top_n3", "--mode", "direct",
+                        "--progress", "0", "--soc-writes", writes],
+                       capture_output=True, text=True)
+    assert r.returncode == 0, r.stdout + r.stderr
+    with open(writes) as f:
+        prog = json.load(f)
+    assert prog["axes"] == 3 and len(prog["commands"]) > 10
+
+    bus = await start(dut)
+    await bus.wr("FEED", FULL_FEED)
+    steps = [0, 0, 0]
+
+    async def count_steps():
+        prev = 0
+        while True:
+            await RisingEdge(dut.clk_i)
+            await ReadOnly()
+            a, b = int(pin(dut, "out_a_o").value), int(pin(dut, "out_b_o").value)
+            for i in range(3):
+                if a >> i & 1 and not prev >> i & 1:
+                    steps[i] += -1 if b >> i & 1 else 1
+            prev = a
+
+    counter = cocotb.start_soon(count_steps())
+    room_lsb = prog["fifo_level_room_lsb"]
+    for cmd in prog["commands"]:
+        for reg, value in cmd:
+            if reg == "CMD_FEED":
+                value = FULL_FEED
+            if reg == "CMD_PUSH":
+                while (await bus.rd("FIFO_LEVEL")) >> room_lsb == 0:
+                    await ClockCycles(dut.clk_i, 20)
+            await bus.wr(reg, value)
+    for _ in range(400):  # at most 400 000 clocks
+        st = await bus.rd("STATUS")
+        if not st & 1 << ST["busy"] and st & 1 << ST["fifo_empty"]:
+            break
+        await ClockCycles(dut.clk_i, 1000)
+    else:
+        raise AssertionError(f"motion_soc still busy, steps so far {steps} of {prog['end']}")
+    await ClockCycles(dut.clk_i, 20)
+    counter.kill()
+    ev = await bus.rd("EVENTS")
+    assert not ev & (1 << EV["overflow"] | 1 << EV["refused"]), f"EVENTS 0x{ev:x}"
+    assert steps == prog["end"], f"steps {steps}, program end {prog['end']}"
+    assert await snapshot_pos(bus) == prog["end"]
 
 
 @cocotb.test()

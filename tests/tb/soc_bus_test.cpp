@@ -71,6 +71,19 @@ TEST_P(SocBusGcode, ProgramReachesTheLockstepLatticePoints) {
   expect_bus_met_lockstep(nlohmann::json::parse(slurp(dir + "/run.json")), GetParam(), true);
 }
 
+// The lockstep run in SystemC mode, then the bus run: the same lattice
+// points (modal.ngc on the default machine).
+TEST_P(SocBusGcode, SystemcLockstepModeReachesTheSameLatticePoints) {
+  const std::string dir = scratch_dir("soc_bus_sc_" + GetParam());
+  const CliResult r =
+      run_hwinterp("gcode " + kData + "modal.ngc --mode systemc --progress 0 --bus " + GetParam() +
+                   " --json " + dir + "/run.json");
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  const auto j = nlohmann::json::parse(slurp(dir + "/run.json"));
+  EXPECT_EQ(j.at("mode").get<std::string>(), "systemc");
+  expect_bus_met_lockstep(j, GetParam(), false);
+}
+
 // modal.ngc on a 3-axis machine at motion_top_edge's narrow widths (its 14
 // commands fit the FIFO).
 TEST_P(SocBusGcode, EdgeWidthsReachTheLockstepLatticePoints) {
