@@ -107,7 +107,7 @@ function(hwinterp_synth_block)
     "${B_NAME} ${B_TOP} ${B_FILES} ${B_YOSYS} ${params_line}\n")
 endfunction()
 
-# Called once after cores.cmake: publishes variants.txt for scripts/synth.sh
+# Called once after cores.cmake: publishes variants.txt and blocks.txt for scripts/synth.sh
 # and hwinterp_variants.h: the Verilated classes of every variant and an
 # X-macro over (core, variant) pairs, plus hwinterp_core_adapters.h, which
 # includes every core's testbench adapter (tb/cores/<core>/<core>_adapter.h),
@@ -143,4 +143,7 @@ function(hwinterp_finish_variants)
        ${HWINTERP_GENERATED_DIR}/variants.txt ONLY_IF_DIFFERENT)
   file(COPY_FILE ${HWINTERP_GENERATED_DIR}/blocks.txt.in
        ${HWINTERP_GENERATED_DIR}/blocks.txt ONLY_IF_DIFFERENT)
+  # Newer than cores.cmake even when unchanged: scripts/synth.sh configures
+  # again only when cores.cmake is newer than these (nothing builds from them).
+  file(TOUCH_NOCREATE ${HWINTERP_GENERATED_DIR}/variants.txt ${HWINTERP_GENERATED_DIR}/blocks.txt)
 endfunction()
