@@ -56,8 +56,8 @@ hwinterp_core_variant(CORE log_stepper NAME log_stepper_edge
 # a part program's feed words need the resolution (at 50 MHz one LSB of a
 # 16-bit word is 763 operations/s, and a 10 mm move at F400 would run 10 %
 # fast; at 24 bits, 3 operations/s).
-set(motion_top_n3 AXES=3 ACC_W=32 COORD_W=24 OPS_W=28 POS_W=32 TIM_W=16 FEED_W=24)
-hwinterp_core_variant(CORE motion_top NAME motion_top_n3 PARAMS ${motion_top_n3} DEFAULTS ${timing})
+hwinterp_core_variant(CORE motion_top NAME motion_top_n3
+  PARAMS AXES=3 ACC_W=32 COORD_W=24 OPS_W=28 POS_W=32 TIM_W=16 FEED_W=24 DEFAULTS ${timing})
 hwinterp_core_variant(CORE motion_top NAME motion_top_n4
   PARAMS AXES=4 ACC_W=32 COORD_W=24 OPS_W=28 POS_W=32 TIM_W=16 FEED_W=24 DEFAULTS ${timing})
 hwinterp_core_variant(CORE motion_top NAME motion_top_edge
@@ -65,13 +65,14 @@ hwinterp_core_variant(CORE motion_top NAME motion_top_edge
 
 # Blocks synthesized beside the cores (scripts/synth.sh, the synthesis tables):
 # designs that are not lockstep cores. hwinterp_synth_block(NAME <row> TOP
-# <module> FILES <list> [YOSYS yowasp] PARAMS K=V...): the top module, its RTL
-# file list rtl/<list>.f, and its parameters (cmake/variants.cmake).
+# <module> FILES <list> [YOSYS yowasp] [VARIANT <variant>] [PARAMS K=V...]):
+# the top module, its RTL file list rtl/<list>.f, and its parameters: a core
+# variant's, then PARAMS (cmake/variants.cmake).
 # motion_soc (docs/soc.md) behind each bus at motion_top_n3's widths, the
 # FIFO at its default depth; YoWASP Yosys, as Debian's 0.23 does not read the
 # PeakRDL register block.
 hwinterp_synth_block(NAME motion_soc_axil_n3 TOP motion_soc_axil FILES motion_soc YOSYS yowasp
-  PARAMS ${motion_top_n3} FIFO_DEPTH=16)
+  VARIANT motion_top_n3 PARAMS FIFO_DEPTH=16)
 hwinterp_synth_block(NAME motion_soc_wb_n3 TOP motion_soc_wb FILES motion_soc YOSYS yowasp
-  PARAMS ${motion_top_n3} FIFO_DEPTH=16)
+  VARIANT motion_top_n3 PARAMS FIFO_DEPTH=16)
 hwinterp_finish_variants()

@@ -77,20 +77,22 @@ function(hwinterp_core_variant)
   set_property(GLOBAL APPEND PROPERTY HWINTERP_VARIANTS ${V_NAME})
   set_property(GLOBAL PROPERTY HWINTERP_VARIANT_${V_NAME}_CORE ${V_CORE})
   set_property(GLOBAL PROPERTY HWINTERP_VARIANT_${V_NAME}_GFLAGS "${gflags}")
+  set_property(GLOBAL PROPERTY HWINTERP_VARIANT_${V_NAME}_PARAMS "${V_PARAMS}")
 endfunction()
 
 # hwinterp_synth_block(NAME <row> TOP <module> FILES <list> [YOSYS debian|yowasp]
-#                      PARAMS K=V...)
+#                      [VARIANT <variant>] [PARAMS K=V...])
 #
 # Declares a block that scripts/synth.sh synthesizes beside the core variants
 # (a row of the synthesis tables) but that is not a lockstep core: no
 # configuration header, no testbench binding, no netlist check. TOP is its top
-# module, FILES names its RTL file list rtl/<list>.f, PARAMS its parameters;
+# module, FILES names its RTL file list rtl/<list>.f; its parameters are those
+# of the core variant VARIANT (declared before it), then PARAMS;
 # YOSYS the Yosys of its generic step and iCE40 mapping (default debian, as
 # the cores; yowasp for RTL Debian's Yosys does not read). One line of
 # generated/blocks.txt: <row> <module> <list> <yosys> K=V...
 function(hwinterp_synth_block)
-  cmake_parse_arguments(B "" "NAME;TOP;FILES;YOSYS" "PARAMS" ${ARGN})
+  cmake_parse_arguments(B "" "NAME;TOP;FILES;YOSYS;VARIANT" "PARAMS" ${ARGN})
   if(NOT B_NAME OR NOT B_TOP OR NOT B_FILES)
     message(FATAL_ERROR "hwinterp_synth_block needs NAME, TOP and FILES")
   endif()
@@ -102,7 +104,15 @@ function(hwinterp_synth_block)
   if(NOT EXISTS ${PROJECT_SOURCE_DIR}/rtl/${B_FILES}.f)
     message(FATAL_ERROR "hwinterp_synth_block ${B_NAME}: no file list rtl/${B_FILES}.f")
   endif()
-  string(REPLACE ";" " " params_line "${B_PARAMS}")
+  set(params "")
+  if(B_VARIANT)
+    get_property(params GLOBAL PROPERTY HWINTERP_VARIANT_${B_VARIANT}_PARAMS)
+    if(NOT params)
+      message(FATAL_ERROR "hwinterp_synth_block ${B_NAME}: no variant ${B_VARIANT} before it")
+    endif()
+  endif()
+  list(APPEND params ${B_PARAMS})
+  string(REPLACE ";" " " params_line "${params}")
   file(APPEND ${HWINTERP_GENERATED_DIR}/blocks.txt.in
     "${B_NAME} ${B_TOP} ${B_FILES} ${B_YOSYS} ${params_line}\n")
 endfunction()
