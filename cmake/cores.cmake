@@ -62,4 +62,17 @@ hwinterp_core_variant(CORE motion_top NAME motion_top_n4
   PARAMS AXES=4 ACC_W=32 COORD_W=24 OPS_W=28 POS_W=32 TIM_W=16 FEED_W=24 DEFAULTS ${timing})
 hwinterp_core_variant(CORE motion_top NAME motion_top_edge
   PARAMS AXES=3 ACC_W=15 COORD_W=11 OPS_W=14 POS_W=17 TIM_W=5 FEED_W=7 DEFAULTS ${timing})
+
+# Blocks synthesized beside the cores (scripts/synth.sh, the synthesis tables):
+# designs that are not lockstep cores. hwinterp_synth_block(NAME <row> TOP
+# <module> FILES <list> [YOSYS yowasp] [VARIANT <variant>] [PARAMS K=V...]):
+# the top module, its RTL file list rtl/<list>.f, and its parameters: a core
+# variant's, then PARAMS (cmake/variants.cmake).
+# motion_soc (docs/soc.md) behind each bus at motion_top_n3's widths, the
+# FIFO at its default depth; YoWASP Yosys, as Debian's 0.23 does not read the
+# PeakRDL register block.
+hwinterp_synth_block(NAME motion_soc_axil_n3 TOP motion_soc_axil FILES motion_soc YOSYS yowasp
+  VARIANT motion_top_n3 PARAMS FIFO_DEPTH=16)
+hwinterp_synth_block(NAME motion_soc_wb_n3 TOP motion_soc_wb FILES motion_soc YOSYS yowasp
+  VARIANT motion_top_n3 PARAMS FIFO_DEPTH=16)
 hwinterp_finish_variants()

@@ -10,6 +10,7 @@ set(HWINTERP_GENERATED_DIR ${CMAKE_BINARY_DIR}/generated)
 file(MAKE_DIRECTORY ${HWINTERP_GENERATED_DIR})
 set_property(GLOBAL PROPERTY HWINTERP_VARIANTS "")
 file(WRITE ${HWINTERP_GENERATED_DIR}/variants.txt.in "")
+file(WRITE ${HWINTERP_GENERATED_DIR}/blocks.txt.in "")
 
 # hwinterp_write_generated(<name> <text>...): writes the texts, concatenated,
 # to ${HWINTERP_GENERATED_DIR}/<name>, touching the file only when it changed,
@@ -76,9 +77,47 @@ function(hwinterp_core_variant)
   set_property(GLOBAL APPEND PROPERTY HWINTERP_VARIANTS ${V_NAME})
   set_property(GLOBAL PROPERTY HWINTERP_VARIANT_${V_NAME}_CORE ${V_CORE})
   set_property(GLOBAL PROPERTY HWINTERP_VARIANT_${V_NAME}_GFLAGS "${gflags}")
+  set_property(GLOBAL PROPERTY HWINTERP_VARIANT_${V_NAME}_PARAMS "${V_PARAMS}")
 endfunction()
 
-# Called once after cores.cmake: publishes variants.txt for scripts/synth.sh
+# hwinterp_synth_block(NAME <row> TOP <module> FILES <list> [YOSYS debian|yowasp]
+#                      [VARIANT <variant>] [PARAMS K=V...])
+#
+# Declares a block that scripts/synth.sh synthesizes beside the core variants
+# (a row of the synthesis tables) but that is not a lockstep core: no
+# configuration header, no testbench binding, no netlist check. TOP is its top
+# module, FILES names its RTL file list rtl/<list>.f; its parameters are those
+# of the core variant VARIANT (declared before it), then PARAMS;
+# YOSYS the Yosys of its generic step and iCE40 mapping (default debian, as
+# the cores; yowasp for RTL Debian's Yosys does not read). One line of
+# generated/blocks.txt: <row> <module> <list> <yosys> K=V...
+function(hwinterp_synth_block)
+  cmake_parse_arguments(B "" "NAME;TOP;FILES;YOSYS;VARIANT" "PARAMS" ${ARGN})
+  if(NOT B_NAME OR NOT B_TOP OR NOT B_FILES)
+    message(FATAL_ERROR "hwinterp_synth_block needs NAME, TOP and FILES")
+  endif()
+  if(NOT B_YOSYS)
+    set(B_YOSYS debian)
+  elseif(NOT B_YOSYS MATCHES "^(debian|yowasp)$")
+    message(FATAL_ERROR "hwinterp_synth_block ${B_NAME}: YOSYS must be debian or yowasp")
+  endif()
+  if(NOT EXISTS ${PROJECT_SOURCE_DIR}/rtl/${B_FILES}.f)
+    message(FATAL_ERROR "hwinterp_synth_block ${B_NAME}: no file list rtl/${B_FILES}.f")
+  endif()
+  set(params "")
+  if(B_VARIANT)
+    get_property(params GLOBAL PROPERTY HWINTERP_VARIANT_${B_VARIANT}_PARAMS)
+    if(NOT params)
+      message(FATAL_ERROR "hwinterp_synth_block ${B_NAME}: no variant ${B_VARIANT} before it")
+    endif()
+  endif()
+  list(APPEND params ${B_PARAMS})
+  string(REPLACE ";" " " params_line "${params}")
+  file(APPEND ${HWINTERP_GENERATED_DIR}/blocks.txt.in
+    "${B_NAME} ${B_TOP} ${B_FILES} ${B_YOSYS} ${params_line}\n")
+endfunction()
+
+# Called once after cores.cmake: publishes variants.txt and blocks.txt for scripts/synth.sh
 # and hwinterp_variants.h: the Verilated classes of every variant and an
 # X-macro over (core, variant) pairs, plus hwinterp_core_adapters.h, which
 # includes every core's testbench adapter (tb/cores/<core>/<core>_adapter.h),
@@ -112,4 +151,9 @@ function(hwinterp_finish_variants)
   hwinterp_write_generated(hwinterp_core_adapters.h "${adapters}")
   file(COPY_FILE ${HWINTERP_GENERATED_DIR}/variants.txt.in
        ${HWINTERP_GENERATED_DIR}/variants.txt ONLY_IF_DIFFERENT)
+  file(COPY_FILE ${HWINTERP_GENERATED_DIR}/blocks.txt.in
+       ${HWINTERP_GENERATED_DIR}/blocks.txt ONLY_IF_DIFFERENT)
+  # Newer than cores.cmake even when unchanged: scripts/synth.sh configures
+  # again only when cores.cmake is newer than these (nothing builds from them).
+  file(TOUCH_NOCREATE ${HWINTERP_GENERATED_DIR}/variants.txt ${HWINTERP_GENERATED_DIR}/blocks.txt)
 endfunction()

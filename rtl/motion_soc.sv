@@ -256,9 +256,14 @@ module motion_soc #(
     end
   end
 
+  // The RAM never reads and writes one word in a clock: a word is read only
+  // while cnt_q != 0 and written only while the FIFO is not full, and the
+  // pointers are equal only when cnt_q is 0 or FIFO_DEPTH (not full needs
+  // cnt_q < FIFO_DEPTH then).
   prim_ram_1r1w #(
-    .WIDTH(ENTRY_W),
-    .DEPTH(FIFO_DEPTH)
+    .WIDTH       (ENTRY_W),
+    .DEPTH       (FIFO_DEPTH),
+    .SAME_WORD_RW(1'b0)
   ) u_fifo_ram (
     .clk_i,
     .we_i   (push_ok && !abort),

@@ -6,12 +6,21 @@
 // (scripts/rtl_style.py accepts the no-reset block only in prim_ram_*.sv).
 //
 // Write: wdata_i goes into word waddr_i at the edge where we_i is high.
-// Read: rdata_o is word raddr_i as it was before the edge where re_i was high
-// (a read and a write of the same word in one clock read the old word), held
-// until the next read.
+// Read: rdata_o is word raddr_i as it was before the edge where re_i was high,
+// held until the next read.
+//
+// A read and a write of the same word in one clock (SAME_WORD_RW):
+//   1: the read gives the old word. iCE40 and ECP5 block RAM leave that case
+//      undefined, so Yosys builds it around the RAM: the write delayed one
+//      clock in flip-flops and a bypass multiplexer on the read data (about
+//      2 * WIDTH flip-flops and WIDTH LUTs).
+//   0: the user never does it (a FIFO whose read and write pointers differ
+//      whenever both ports act); the RAM is used as it is (Yosys's
+//      no_rw_check), and simulation stops with an error if it happens.
 module prim_ram_1r1w #(
-  parameter int WIDTH = 32,  // bits a word (>= 1)
-  parameter int DEPTH = 16   // words (>= 2)
+  parameter int WIDTH = 32,          // bits a word (>= 1)
+  parameter int DEPTH = 16,          // words (>= 2)
+  parameter bit SAME_WORD_RW = 1'b1  // see above
 ) (
   input  logic                     clk_i,
   input  logic                     we_i,
@@ -30,12 +39,28 @@ module prim_ram_1r1w #(
   end
 `endif
 
-  logic [WIDTH-1:0] mem_q [DEPTH];
   logic [WIDTH-1:0] rdata_q;
 
-  always_ff @(posedge clk_i) begin
-    if (we_i) mem_q[waddr_i] <= wdata_i;
-    if (re_i) rdata_q <= mem_q[raddr_i];
+  if (SAME_WORD_RW) begin : g_old_word
+    logic [WIDTH-1:0] mem_q [DEPTH];
+    always_ff @(posedge clk_i) begin
+      if (we_i) mem_q[waddr_i] <= wdata_i;
+      if (re_i) rdata_q <= mem_q[raddr_i];
+    end
+  end else begin : g_no_rw_check
+    (* no_rw_check *) logic [WIDTH-1:0] mem_q [DEPTH];
+    always_ff @(posedge clk_i) begin
+      if (we_i) mem_q[waddr_i] <= wdata_i;
+      if (re_i) rdata_q <= mem_q[raddr_i];
+    end
+`ifndef SYNTHESIS
+    always_ff @(posedge clk_i) begin
+      if (we_i && re_i && waddr_i == raddr_i) begin
+        $error("prim_ram_1r1w: a read and a write of word %0d in one clock (SAME_WORD_RW = 0)",
+               waddr_i);
+      end
+    end
+`endif
   end
 
   assign rdata_o = rdata_q;

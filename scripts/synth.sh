@@ -7,8 +7,9 @@
 #                         [--seeds "1 2 3"] [--freq MHZ] [--check-netlist | --no-check-netlist]
 #                         [--commands N] [--pnr-timeout S]
 #
-#   --variant NAME   a variant of <build>/generated/variants.txt (repeatable;
-#                    default: all of them)
+#   --variant NAME   a variant of <build>/generated/variants.txt or a block of
+#                    <build>/generated/blocks.txt (repeatable; default: all
+#                    of them)
 #   --match REGEX    only the variants whose name matches REGEX (bash =~),
 #                    e.g. '_edge$': one narrow variant of every core (CI's
 #                    netlist check)
@@ -55,6 +56,10 @@
 #      stream's input frames and a replay testbench; with +define+NETLIST it
 #      runs step 1's netlist beside the RTL and compares every output every
 #      clock (needs the build's hwinterp; built here if missing).
+# Blocks (steps 1-5, no netlist check): designs that are not lockstep cores,
+# listed in cmake/cores.cmake by hwinterp_synth_block (blocks.txt: row name,
+# top module, RTL file list rtl/<list>.f, the Yosys of steps 1-3, parameters),
+# e.g. motion_soc behind its register block; their rows join the variants'.
 # Peers (steps 1-5, no netlist check): LiteX-CNC's stepgen, 1 and 4 axes
 # (peer_litexcnc_stepgen_n1, _n4), elaborated to Verilog in <out>/src/ by
 # scripts/synth/peers/litexcnc_stepgen.py from the pinned PyPI package litexcnc
@@ -172,27 +177,24 @@ case "$root$out" in
 esac
 yowasp=(env "YOWASP_MOUNT=$root=$root:$out=$out")  # prefix of every YoWASP call
 
-# variants.txt is written at configure time; configure if it is missing or
-# older than the file it comes from, so a changed variant is never synthesized
-# with stale parameters.
+# variants.txt and blocks.txt are written at configure time; configure if one
+# is missing or older than the file they come from, so a changed variant is
+# never synthesized with stale parameters.
 vfile=$build/generated/variants.txt
-if [ ! -f "$vfile" ] || [ "$root/cmake/cores.cmake" -nt "$vfile" ]; then
+bfile=$build/generated/blocks.txt
+if [ ! -f "$vfile" ] || [ ! -f "$bfile" ] || [ "$root/cmake/cores.cmake" -nt "$vfile" ] ||
+  [ "$root/cmake/cores.cmake" -nt "$bfile" ]; then
   for t in cmake ninja; do
     command -v "$t" >/dev/null || die "$t not found (scripts/setup.sh installs it)"
   done
   echo "synth: configuring $build for $vfile (log: $out/configure.log)" >&2
   cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release >"$out/configure.log" 2>&1 ||
     die "step 'cmake configure' failed; see $out/configure.log"
-  [ -f "$vfile" ] || die "configure did not write $vfile; see $out/configure.log"
+  for f in "$vfile" "$bfile"; do
+    [ -f "$f" ] || die "configure did not write $f; see $out/configure.log"
+  done
 fi
 
-# The netlist check replays co-simulation frames: it needs hwinterp.
-hw=$build/tb/hwinterp
-if [ "$check" -eq 1 ]; then
-  echo "synth: building hwinterp for the netlist check (log: $out/build.log)" >&2
-  cmake --build "$build" -j "${HWINTERP_JOBS:-2}" --target hwinterp >"$out/build.log" 2>&1 ||
-    die "step 'build hwinterp' failed; see $out/build.log"
-fi
 
 declare -A vline=()
 all=()
@@ -202,11 +204,20 @@ while read -r name rest; do
   all+=("$name")
 done <"$vfile"
 [ ${#all[@]} -gt 0 ] || die "$vfile lists no variant"
+# Blocks: row name -> "top list yosys"; vline gets "top params" as for a core.
+declare -A block=()
+while read -r name top list yo rest; do
+  [ -n "$name" ] || continue
+  [ -z "${vline[$name]+x}" ] || die "$bfile: block $name is also a variant"
+  block[$name]="$top $list $yo"
+  vline[$name]="$top $rest"
+  all+=("$name")
+done <"$bfile"
 if [ ${#variants[@]} -eq 0 ]; then
   variants=("${all[@]}")
 else
   for v in "${variants[@]}"; do
-    [ -n "${vline[$v]+x}" ] || bad "unknown variant '$v' (variants.txt has: ${all[*]})"
+    [ -n "${vline[$v]+x}" ] || bad "unknown variant '$v' (variants.txt and blocks.txt have: ${all[*]})"
   done
 fi
 if [ -n "$match" ]; then
@@ -216,17 +227,40 @@ if [ -n "$match" ]; then
   variants=("${kept[@]}")
 fi
 
+# The netlist check replays co-simulation frames: it needs hwinterp (blocks
+# and peers have no netlist check).
+hw=$build/tb/hwinterp
+cores_checked=0
+for v in "${variants[@]}"; do [ -n "${block[$v]+x}" ] || cores_checked=1; done
+if [ "$check" -eq 1 ] && [ $cores_checked -eq 1 ]; then
+  echo "synth: building hwinterp for the netlist check (log: $out/build.log)" >&2
+  cmake --build "$build" -j "${HWINTERP_JOBS:-2}" --target hwinterp >"$out/build.log" 2>&1 ||
+    die "step 'build hwinterp' failed; see $out/build.log"
+fi
+
 # The peers: name (= its Verilog module) -> axes; scripts/synth/peers/ writes them.
 declare -A peer_axes=([peer_litexcnc_stepgen_n1]=1 [peer_litexcnc_stepgen_n4]=4)
 peers=()
 [ $peers_on -eq 0 ] || peers=(peer_litexcnc_stepgen_n1 peer_litexcnc_stepgen_n4)
 
-# The RTL files of a core, from rtl/<core>.f (the list Verilator gets too).
+# The RTL files of a core, from rtl/<core>.f (the list Verilator gets too),
+# or of a block, from its list.
 rtl_files() {
   local list=$root/rtl/$1.f
   [ -f "$list" ] || die "no RTL file list $list for core $1"
   grep -v '^#' "$list" | sed "s|^|$root/rtl/|"
 }
+
+# The YoWASP tools are needed for ECP5, for --ice40-yosys yowasp, and for a
+# block whose Yosys is yowasp.
+need_yowasp=$do_ecp5
+[ $do_ice40 -eq 0 ] || [ "$ice40_yosys_arg" != yowasp ] || need_yowasp=1
+for v in "${variants[@]}"; do
+  if [ -n "${block[$v]+x}" ]; then
+    read -r _ _ yo <<<"${block[$v]}"
+    [ "$yo" != yowasp ] || need_yowasp=1
+  fi
+done
 
 # run_step STEP LOG CMD...: runs CMD with its output in LOG, appends the wall
 # time to $vdir/times.tsv, and stops the script naming the step and the log.
@@ -272,19 +306,25 @@ pnr_seeds() {
 # construct it does not support stops it with an error naming the line (the
 # RTL is never rewritten here), and yosys_compat.py refuses the constructs
 # Yosys 0.23 reads wrongly without any message.
+# prepare_core CORE [LIST [YOSYS...]]: a block names its file list and its
+# Yosys (a command); the compatibility check is for Debian's Yosys only.
 declare -A yfiles=()
 prepare_core() {
-  local core=$1 srcdir files
+  local core=$1 list=${2:-$1} srcdir files
+  local ys=("${@:3}")
+  [ ${#ys[@]} -gt 0 ] || ys=(yosys)
   srcdir=$out/src/$core
-  mapfile -t files < <(rtl_files "$core")
-  [ ${#files[@]} -gt 0 ] || die "rtl/$core.f lists no file"
-  for f in "${files[@]}"; do [ -f "$f" ] || die "RTL file $f (rtl/$core.f) not found"; done
+  mapfile -t files < <(rtl_files "$list")
+  [ ${#files[@]} -gt 0 ] || die "rtl/$list.f lists no file"
+  for f in "${files[@]}"; do [ -f "$f" ] || die "RTL file $f (rtl/$list.f) not found"; done
   mkdir -p "$srcdir"
-  "$py" "$root/scripts/synth/yosys_compat.py" "${files[@]}" 2>"$srcdir/compat_check.log" ||
-    die "the $core RTL has constructs Yosys 0.23 misreads; see $srcdir/compat_check.log:
+  if [ "${ys[0]}" = yosys ]; then
+    "$py" "$root/scripts/synth/yosys_compat.py" "${files[@]}" 2>"$srcdir/compat_check.log" ||
+      die "the $core RTL has constructs Yosys 0.23 misreads; see $srcdir/compat_check.log:
 $(cat "$srcdir/compat_check.log")"
-  yosys -q -l "$srcdir/read.log" -p "read_verilog -sv ${files[*]}" >/dev/null 2>&1 ||
-    die "step 'read' failed: Yosys $(yosys -V | awk '{print $2}') cannot read the $core RTL" \
+  fi
+  "${ys[@]}" -q -l "$srcdir/read.log" -p "read_verilog -sv ${files[*]}" >/dev/null 2>&1 ||
+    die "step 'read' failed: Yosys $("${ys[@]}" -V | awk '{print $2}') cannot read the $core RTL" \
       "as it is; see $srcdir/read.log:
 $(grep -m3 'ERROR' "$srcdir/read.log" || tail -n 3 "$srcdir/read.log")"
   yfiles[$core]="${files[*]}"
@@ -292,7 +332,7 @@ $(grep -m3 'ERROR' "$srcdir/read.log" || tail -n 3 "$srcdir/read.log")"
 
 # The YoWASP tools' first call compiles them (80-85 s for Yosys on this
 # machine's class); done once here, timed, so no variant's step time holds it.
-if [ $do_ecp5 -eq 1 ] || { [ $do_ice40 -eq 1 ] && [ "$ice40_yosys_arg" = yowasp ]; }; then
+if [ $need_yowasp -eq 1 ]; then
   : >"$out/yowasp_warmup.tsv"
   for t in "$yw_yosys" "$yw_nextpnr_ecp5"; do
     [ "$t" = "$yw_yosys" ] || [ $do_ecp5 -eq 1 ] || continue
@@ -311,6 +351,11 @@ for variant in "${variants[@]}" "${peers[@]}"; do
   rm -rf "$vdir"
   mkdir -p "$vdir"
   : >"$vdir/times.tsv"
+  # The Yosys of steps 1-3 (generic, ports, iCE40): Debian's for the cores,
+  # a block's own.
+  gen_yosys=(yosys)
+  v_ice40_yosys=("${ice40_yosys[@]}")
+  filelist=""
   if [ -n "${peer_axes[$variant]+x}" ]; then
     # A peer: its Verilog, written by its own generator, is the "RTL".
     core=$variant
@@ -322,6 +367,15 @@ for variant in "${variants[@]}" "${peers[@]}"; do
       --name "$variant" --out "$srcdir/$variant.v" --info "$srcdir/peer.json"
     yfiles[$core]=$srcdir/$variant.v
     vcheck="n/a (peer)"
+  elif [ -n "${block[$variant]+x}" ]; then
+    read -r core params_kv <<<"${vline[$variant]}"
+    read -r _ filelist yo <<<"${block[$variant]}"
+    if [ "$yo" = yowasp ]; then
+      gen_yosys=("${yowasp[@]}" "$yw_yosys")
+      v_ice40_yosys=("$yw_yosys")  # the iCE40 steps prefix the mounts themselves
+    fi
+    [ -n "${yfiles[$core]+x}" ] || prepare_core "$core" "$filelist" "${gen_yosys[@]}"
+    vcheck="n/a (block)"
   else
     read -r core params_kv <<<"${vline[$variant]}"
     [ -n "${yfiles[$core]+x}" ] || prepare_core "$core"
@@ -337,13 +391,14 @@ for variant in "${variants[@]}" "${peers[@]}"; do
   read_rtl="read_verilog -sv ${yfiles[$core]}"
   {
     printf 'variant\t%s\ncore\t%s\nparams\t%s\n' "$variant" "$core" "$params_kv"
+    [ -z "$filelist" ] || printf 'block\t1\nfilelist\t%s\n' "$filelist"
     printf 'generic_only\t%s\nfamilies\t%s\nseeds\t%s\nfreq\t%s\ncheck\t%s\n' "$generic_only" \
       "$families" "${seed_list[*]}" "$freq" "$vcheck"
     printf 'date\t%s\ngit\t%s\n' "$(date -u +%Y-%m-%d)" \
       "$(git -C "$root" describe --always --dirty 2>/dev/null || echo unknown)"
-    printf 'yosys_generic\t%s\n' "$(yosys -V)"
+    printf 'yosys_generic\t%s\n' "$("${gen_yosys[@]}" -V)"
     if [ $do_ice40 -eq 1 ]; then
-      printf 'yosys\t%s\nnextpnr\t%s\n' "$("${ice40_yosys[@]}" -V)" \
+      printf 'yosys\t%s\nnextpnr\t%s\n' "$("${v_ice40_yosys[@]}" -V)" \
         "$(nextpnr-ice40 --version 2>&1 | head -n1 || true)"
     fi
     if [ $do_ecp5 -eq 1 ]; then
@@ -358,14 +413,14 @@ for variant in "${variants[@]}" "${peers[@]}"; do
 
   # 1. Generic synthesis. -flatten: one figure for the whole core, as the
   #    iCE40 flow (which flattens by default) gives.
-  run_step generic "$vdir/generic.log" yosys -p "$read_rtl; $chparam
+  run_step generic "$vdir/generic.log" "${gen_yosys[@]}" -p "$read_rtl; $chparam
     synth -flatten -top $core; tee -q -o $vdir/generic_stat.json stat -json;
     rename -top ${core}_net; write_verilog -noattr $vdir/${core}_net.v"
 
   if [ -n "$families" ]; then
     # The harness, generated from the core's ports, shared by every family.
     #    (rename -top: chparam may leave the top as $paramod$<hash>\<core>.)
-    run_step ports "$vdir/ports.log" yosys -p "$read_rtl; $chparam hierarchy -top $core; proc;
+    run_step ports "$vdir/ports.log" "${gen_yosys[@]}" -p "$read_rtl; $chparam hierarchy -top $core; proc;
       rename -top $core;
       write_json $vdir/ports.json"
     run_step make_harness "$vdir/make_harness.log" sh -c \
@@ -375,13 +430,13 @@ for variant in "${variants[@]}" "${peers[@]}"; do
 
   if [ $do_ice40 -eq 1 ]; then
     # 2. The bare core mapped to iCE40 cells (not placed: too many ports).
-    run_step ice40_core "$vdir/ice40_core.log" "${yowasp[@]}" "${ice40_yosys[@]}" -p "$read_rtl; $chparam
+    run_step ice40_core "$vdir/ice40_core.log" "${yowasp[@]}" "${v_ice40_yosys[@]}" -p "$read_rtl; $chparam
       synth_ice40 -top $core; tee -q -o $vdir/ice40_core_stat.json stat -json"
 
     # 3. The harness mapped once and placed per seed. (Newer Yosys, the
     #    YoWASP one, keeps a $scopeinfo cell per flattened instance, which
     #    Debian's nextpnr-ice40 0.4 cannot place; none in Debian's Yosys 0.23.)
-    run_step ice40_harness "$vdir/ice40_harness.log" "${yowasp[@]}" "${ice40_yosys[@]}" -p \
+    run_step ice40_harness "$vdir/ice40_harness.log" "${yowasp[@]}" "${v_ice40_yosys[@]}" -p \
       "$read_rtl $vdir/${core}_harness.sv;
       synth_ice40 -top ${core}_harness; delete t:\$scopeinfo; write_json $vdir/harness.json;
       tee -q -o $vdir/harness_stat.json stat -json"

@@ -9,7 +9,9 @@ Usage: publish.py [--check] [--variants FILE] [SYNTH_JSON...]
                 same variants in docs/synth.json. Results of --generic-only runs
                 are refused: the table needs the iCE40 figures.
   --variants F  the build's generated/variants.txt: every variant it lists must
-                be published, and no other (checked with --check)
+                be published, and no other (checked with --check); the blocks of
+                generated/blocks.txt beside it (hwinterp_synth_block in
+                cmake/cores.cmake) may be published too, after the variants
   --check       write nothing; exit 1 if a table or block is not what docs/synth.json
                 renders, if a published variant was measured on RTL other than
                 today's rtl/<core>.f files (rtl_sha256), or if a variant is missing
@@ -244,6 +246,12 @@ def read_variants(path):
         fail("cannot read --variants %s: %s" % (path, e))
 
 
+def read_blocks(vfile):
+    """The block names of the blocks.txt beside a variants.txt ([] when there is none)."""
+    path = os.path.join(os.path.dirname(vfile), "blocks.txt")
+    return read_variants(path) if os.path.exists(path) else []
+
+
 def main(argv):
     check, vfile, inputs = False, None, []
     args = list(argv[1:])
@@ -281,7 +289,8 @@ def main(argv):
     peers = [peer_by_name[v] for v in sorted(peer_by_name)]
     # Without --variants, the published order (then new variants by name), so a
     # plain merge renders the table as a --check --variants run does.
-    order = read_variants(vfile) if vfile else \
+    blocks = read_blocks(vfile) if vfile else []
+    order = read_variants(vfile) + blocks if vfile else \
         [r["variant"] for r in published] + sorted(v for v in by_name if v not in
                                                   {r["variant"] for r in published})
     results = [by_name[v] for v in order if v in by_name]
@@ -290,7 +299,8 @@ def main(argv):
     problems = []
     if vfile:
         problems += ["%s: not published (run scripts/synth.sh --variant %s, then publish.py "
-                     "its synth.json)" % (v, v) for v in order if v not in by_name]
+                     "its synth.json)" % (v, v) for v in order
+                     if v not in by_name and v not in blocks]
         problems += ["%s: published but not a variant of cmake/cores.cmake" % v
                      for v in by_name if v not in order]
     for p in peers:
@@ -302,10 +312,11 @@ def main(argv):
                 problems.append("%s: measured with %s %s, scripts/requirements.txt pins %s: "
                                 "synthesize it again" % (p["variant"], pkg, version, pinned(pkg)))
     for r in results:
-        now = rtl_digest(r["core"])
+        now = rtl_digest(r.get("filelist", r["core"]))
         if r.get("rtl_sha256") != now:
             problems.append("%s: measured on other RTL than rtl/%s.f lists today (rtl_sha256 %s, "
-                            "now %s): synthesize it again" % (r["variant"], r["core"],
+                            "now %s): synthesize it again" % (r["variant"],
+                                                              r.get("filelist", r["core"]),
                                                               (r.get("rtl_sha256") or "none")[:12],
                                                               now[:12]))
     head, section, tail = table_parts()

@@ -12,6 +12,10 @@ named peer_*, apart, so that a consumer of "variants" sees only hwinterp's
 cores) and OUT_DIR/synth.md, and prints the markdown.
 
 JSON keys per record (besides the iCE40 ones: ice40_core, harness, up5k):
+  block, filelist         (blocks only: hwinterp_synth_block in cmake/cores.cmake)
+                          true, and the RTL file list rtl/<filelist>.f; "core"
+                          is then the block's top module, and rtl_sha256 is
+                          over that list
   tools.yosys_generic     the Yosys of the generic step (Debian's)
   ecp5                    the ECP5 flow (synth.sh --family ecp5):
     device, package, speed, tools {yosys, nextpnr}
@@ -276,7 +280,8 @@ def package_pins(device, package):
 
 
 def rtl_digest(core, root=ROOT):
-    """SHA-256 over the RTL files of rtl/<core>.f, in list order (names and contents).
+    """SHA-256 over the RTL files of rtl/<core>.f, in list order (names and contents); for
+    a block, `core` is its file list's name.
 
     Recorded with every result, so a published figure can be told apart from the RTL it
     no longer describes (scripts/synth/publish.py --check)."""
@@ -337,7 +342,10 @@ def variant_result(out, variant):
             res["peer"] = json.load(f)
         res["source_sha256"] = file_digest(info["peer_source"])
     else:
-        res["rtl_sha256"] = rtl_digest(info["core"])
+        if info.get("block") == "1":
+            res["block"] = True
+            res["filelist"] = info["filelist"]
+        res["rtl_sha256"] = rtl_digest(info.get("filelist", info["core"]))
     g = cells(os.path.join(vdir, "generic_stat.json"))
     res["generic"] = {
         "cells": sum(g.values()),
