@@ -565,45 +565,6 @@ def r_profile_programs(_):
                  rows) + ["", d["what"] + ".", "", source(d)]
 
 
-def r_soc_synth(_):
-    """docs/soc.md: motion_soc's synthesis (motion_soc_axil, default parameters)."""
-    d = load("soc.json")["synth"]
-    i, e = d["ice40"], d["ecp5"]
-    rows = [
-        ("iCE40 HX8K (ct256)", "%d LUT4, %d carry, %d FF, %d SB_RAM40_4K (the FIFO)" % (
-            i["lut4"], i["carry"], i["ff"], i["bram"]),
-         "does not fit: %d/%d logic cells (%d%%)" % (i["lc_used"], i["lc_available"],
-                                                     round(100.0 * i["lc_used"] / i["lc_available"]))),
-        ("ECP5 LFE5U-25F-6 (CABGA256)", "%d LUT4, %d CCU2C, %d FF, %d TRELLIS_DPR16X4 (the FIFO, LUT RAM)" % (
-            e["lut4"], e["ccu2c"], e["ff"], e["dpr16x4"]),
-         "%d/%d combinational cells (%d%%); %s" % (
-             e["comb_used"], e["comb_available"], round(100.0 * e["comb_used"] / e["comb_available"]),
-             ("routed Fmax %s MHz (seeds %s)" % (", ".join("%.2f" % f for f in e["fmax_mhz"]),
-                                                  ", ".join(str(x) for x in e["seeds"])))
-             if e["fmax_mhz"] else
-             ("routing not finished in the session; the post-placement estimate (seed %s) was "
-              "%.2f MHz" % (e["seeds"][0], e["placed_estimate_mhz"])))),
-    ]
-    n = d.get("ice40_narrow")
-    if n:
-        rows.insert(1, (
-            "iCE40 HX8K (ct256), narrow build (%s)" % n["params"],
-            "%d LUT4, %d carry, %d FF, %d SB_RAM40_4K" % (n["lut4"], n["carry"], n["ff"], n["bram"]),
-            "%d/%d logic cells (%d%%); routed Fmax %s MHz (seeds %s)" % (
-                n["lc_used"], n["lc_available"], round(100.0 * n["lc_used"] / n["lc_available"]),
-                ", ".join("%.2f" % f for f in n["fmax_mhz"]), ", ".join(str(x) for x in n["seeds"]))))
-    r = d["regs_alone_ice40"]
-    h = d["hierarchy_ice40"]
-    return table(["Family", "Mapped", "Placed and routed"], rows) + [
-        "",
-        "The register block's share (iCE40 mapping): alone, `motion_soc_regs_axil` is %d LUT4 and "
-        "%d FF; in the unflattened design the register block is %d LUT4 of %d, `motion_soc`'s own "
-        "logic %d LUT4, `motion_top` and its stages the rest (the flattened mapping above is %d "
-        "LUT4 smaller: optimization across the module boundaries)." % (r["lut4"], r["ff"], h["regs_lut4"], h["total_lut4"],
-                                  h["soc_lut4"], h["total_lut4"] - i["lut4"]),
-        "", source(d)]
-
-
 RENDERERS = {
     "folder-graph": ("tb", r_folder_graph),
     "synth-paths": ("docs/synth.json", r_synth_paths),
@@ -635,7 +596,6 @@ RENDERERS = {
     "synth-blocks": ("docs/data/synth_blocks.json", r_synth_blocks),
     "soc-timing": ("docs/data/soc.json", r_soc_timing),
     "soc-tests": ("docs/data/soc.json", r_soc_tests),
-    "soc-synth": ("docs/data/soc.json", r_soc_synth),
     "profile-ruckig": ("docs/data/profile_ruckig.json", r_profile_ruckig),
     "profile-programs": ("docs/data/profile_programs.json", r_profile_programs),
 }
