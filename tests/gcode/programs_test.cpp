@@ -28,8 +28,9 @@ void PrintTo(const Program& p, std::ostream* os) { *os << p.name << ".ngc"; }
 // Every committed program with its move counts (so that a changed program or
 // reader shows up here too).
 const Program kPrograms[] = {
-    {"arcs", 35, 26, false},       {"engraving", 380, 252, false}, {"inch", 12, 6, true},
-    {"incremental", 17, 7, false}, {"modal", 16, 4, true},         {"words", 12, 1, false},
+    {"arcs", 35, 26, false},  {"corners", 54, 4, false}, {"engraving", 380, 252, false},
+    {"helix", 23, 17, false}, {"inch", 12, 6, true},     {"incremental", 17, 7, false},
+    {"modal", 16, 4, true},   {"words", 12, 1, false},
 };
 
 std::string path(const std::string& name, const char* ext) {
@@ -68,6 +69,7 @@ TEST_P(Rs274Program, NgcReaderMatchesRs274sCanon) {
     for (int i = 0; i < kAxes; ++i) EXPECT_NEAR(x.end[i], y.end[i], tol) << "axis " << i;
     EXPECT_NEAR(x.feed, y.feed, tol);
     EXPECT_EQ(x.plane, y.plane);
+    EXPECT_EQ(x.stop_before, y.stop_before);
     if (x.kind == MoveKind::kArc) {
       EXPECT_NEAR(x.center[0], y.center[0], tol);
       EXPECT_NEAR(x.center[1], y.center[1], tol);
