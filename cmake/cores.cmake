@@ -62,4 +62,11 @@ hwinterp_core_variant(CORE motion_top NAME motion_top_n4
   PARAMS AXES=4 ACC_W=32 COORD_W=24 OPS_W=28 POS_W=32 TIM_W=16 FEED_W=24 DEFAULTS ${timing})
 hwinterp_core_variant(CORE motion_top NAME motion_top_edge
   PARAMS AXES=3 ACC_W=15 COORD_W=11 OPS_W=14 POS_W=17 TIM_W=5 FEED_W=7 DEFAULTS ${timing})
+# Blocks synthesized on their own, not lockstep cores (generated/blocks.txt,
+# read by scripts/synth.sh beside variants.txt). feed_profile: the
+# jerk-limited feed profile (docs/profile.md) at the widths the harness runs
+# it (tb/lockstep/harness_profile.h; rtl/CMakeLists.txt Verilates
+# Vfeed_profile_harness_cc from this line).
+hwinterp_synth_block(CORE feed_profile NAME feed_profile
+  PARAMS FEED_W=24 SPD_W=48 TICK_W=10 LEN_W=10 LVL_W=16 OPS_W=28)
 hwinterp_finish_variants()

@@ -10,6 +10,7 @@ set(HWINTERP_GENERATED_DIR ${CMAKE_BINARY_DIR}/generated)
 file(MAKE_DIRECTORY ${HWINTERP_GENERATED_DIR})
 set_property(GLOBAL PROPERTY HWINTERP_VARIANTS "")
 file(WRITE ${HWINTERP_GENERATED_DIR}/variants.txt.in "")
+file(WRITE ${HWINTERP_GENERATED_DIR}/blocks.txt.in "")
 
 # hwinterp_write_generated(<name> <text>...): writes the texts, concatenated,
 # to ${HWINTERP_GENERATED_DIR}/<name>, touching the file only when it changed,
@@ -78,7 +79,29 @@ function(hwinterp_core_variant)
   set_property(GLOBAL PROPERTY HWINTERP_VARIANT_${V_NAME}_GFLAGS "${gflags}")
 endfunction()
 
-# Called once after cores.cmake: publishes variants.txt for scripts/synth.sh
+# hwinterp_synth_block(CORE <module> NAME <name> PARAMS K=V...)
+#
+# Declares a block that is synthesized (scripts/synth.sh) but is not a
+# lockstep core: no testbench adapter, no conformance suite, no regression
+# case. It goes to blocks.txt (the format of variants.txt: name, top module,
+# parameters), never to variants.txt or the testbench's X-macros. Its RTL
+# files are rtl/<module>.f, as a core's. HWINTERP_BLOCK_<name>_GFLAGS holds
+# its -G flags for a Verilated build at the same widths.
+function(hwinterp_synth_block)
+  cmake_parse_arguments(B "" "CORE;NAME" "PARAMS" ${ARGN})
+  if(NOT B_CORE OR NOT B_NAME OR NOT B_PARAMS)
+    message(FATAL_ERROR "hwinterp_synth_block needs CORE, NAME and PARAMS")
+  endif()
+  set(gflags "")
+  foreach(kv IN LISTS B_PARAMS)
+    list(APPEND gflags "-G${kv}")
+  endforeach()
+  string(REPLACE ";" " " params_line "${B_PARAMS}")
+  file(APPEND ${HWINTERP_GENERATED_DIR}/blocks.txt.in "${B_NAME} ${B_CORE} ${params_line}\n")
+  set_property(GLOBAL PROPERTY HWINTERP_BLOCK_${B_NAME}_GFLAGS "${gflags}")
+endfunction()
+
+# Called once after cores.cmake: publishes variants.txt (and blocks.txt) for scripts/synth.sh
 # and hwinterp_variants.h: the Verilated classes of every variant and an
 # X-macro over (core, variant) pairs, plus hwinterp_core_adapters.h, which
 # includes every core's testbench adapter (tb/cores/<core>/<core>_adapter.h),
@@ -112,4 +135,6 @@ function(hwinterp_finish_variants)
   hwinterp_write_generated(hwinterp_core_adapters.h "${adapters}")
   file(COPY_FILE ${HWINTERP_GENERATED_DIR}/variants.txt.in
        ${HWINTERP_GENERATED_DIR}/variants.txt ONLY_IF_DIFFERENT)
+  file(COPY_FILE ${HWINTERP_GENERATED_DIR}/blocks.txt.in
+       ${HWINTERP_GENERATED_DIR}/blocks.txt ONLY_IF_DIFFERENT)
 endfunction()

@@ -28,8 +28,8 @@ module feed_profile #(
   parameter int LVL_W  = 16,  // speed level bits (2..24)
   parameter int OPS_W  = 28   // operations of a move (2..40)
 ) (
-  input  logic              clk_i,
-  input  logic              rst_ni,
+  input  logic              clk_i,           // the clock
+  input  logic              rst_ni,          // asynchronous reset, active low
   // configuration, latched while the block is at rest (busy_o low)
   input  logic [SPD_W-1:0]  q_i,             // speed quantum: ops/clock * 2^SPD_W (jerk a tick^2)
   input  logic [LEN_W:0]    len_i,           // L, ticks of the moving sum (0 acts as 1, capped at 2^LEN_W)

@@ -7,8 +7,9 @@
 #                         [--seeds "1 2 3"] [--freq MHZ] [--check-netlist | --no-check-netlist]
 #                         [--commands N] [--pnr-timeout S]
 #
-#   --variant NAME   a variant of <build>/generated/variants.txt (repeatable;
-#                    default: all of them)
+#   --variant NAME   a variant of <build>/generated/variants.txt or a block
+#                    of <build>/generated/blocks.txt (repeatable; default:
+#                    all of them)
 #   --match REGEX    only the variants whose name matches REGEX (bash =~),
 #                    e.g. '_edge$': one narrow variant of every core (CI's
 #                    netlist check)
@@ -37,7 +38,10 @@
 #                    nextpnr-ice40 0.4); the table records the seed as not routed
 #
 # Per variant (parameters from variants.txt, the configure-time copy of
-# cmake/cores.cmake; RTL files from rtl/<core>.f):
+# cmake/cores.cmake; RTL files from rtl/<core>.f). A block (blocks.txt:
+# hwinterp_synth_block in cmake/cores.cmake, e.g. feed_profile) is a module
+# that is not a lockstep core: steps 1-5 as a variant's, no netlist check
+# (step 6 replays a core's co-simulated frames; a block has none).
 #   1. Yosys `synth -flatten -top <core>`: generic cells by type.
 #   2. (ice40) `synth_ice40 -top <core>`: LUT4 / SB_CARRY / flip-flops of the
 #      bare core.
@@ -176,7 +180,10 @@ yowasp=(env "YOWASP_MOUNT=$root=$root:$out=$out")  # prefix of every YoWASP call
 # older than the file it comes from, so a changed variant is never synthesized
 # with stale parameters.
 vfile=$build/generated/variants.txt
-if [ ! -f "$vfile" ] || [ "$root/cmake/cores.cmake" -nt "$vfile" ]; then
+bfile=$build/generated/blocks.txt
+# (The .in copy is written at every configure: the stamp of the last one.)
+if [ ! -f "$vfile" ] || [ ! -f "$bfile" ] || [ ! -f "$vfile.in" ] ||
+  [ "$root/cmake/cores.cmake" -nt "$vfile.in" ]; then
   for t in cmake ninja; do
     command -v "$t" >/dev/null || die "$t not found (scripts/setup.sh installs it)"
   done
@@ -186,15 +193,8 @@ if [ ! -f "$vfile" ] || [ "$root/cmake/cores.cmake" -nt "$vfile" ]; then
   [ -f "$vfile" ] || die "configure did not write $vfile; see $out/configure.log"
 fi
 
-# The netlist check replays co-simulation frames: it needs hwinterp.
-hw=$build/tb/hwinterp
-if [ "$check" -eq 1 ]; then
-  echo "synth: building hwinterp for the netlist check (log: $out/build.log)" >&2
-  cmake --build "$build" -j "${HWINTERP_JOBS:-2}" --target hwinterp >"$out/build.log" 2>&1 ||
-    die "step 'build hwinterp' failed; see $out/build.log"
-fi
-
 declare -A vline=()
+declare -A is_block=()
 all=()
 while read -r name rest; do
   [ -n "$name" ] || continue
@@ -202,11 +202,17 @@ while read -r name rest; do
   all+=("$name")
 done <"$vfile"
 [ ${#all[@]} -gt 0 ] || die "$vfile lists no variant"
+while read -r name rest; do
+  [ -n "$name" ] || continue
+  vline[$name]=$rest
+  is_block[$name]=1
+  all+=("$name")
+done <"$bfile"
 if [ ${#variants[@]} -eq 0 ]; then
   variants=("${all[@]}")
 else
   for v in "${variants[@]}"; do
-    [ -n "${vline[$v]+x}" ] || bad "unknown variant '$v' (variants.txt has: ${all[*]})"
+    [ -n "${vline[$v]+x}" ] || bad "unknown variant '$v' (variants.txt and blocks.txt have: ${all[*]})"
   done
 fi
 if [ -n "$match" ]; then
@@ -214,6 +220,17 @@ if [ -n "$match" ]; then
   for v in "${variants[@]}"; do [[ $v =~ $match ]] && kept+=("$v"); done
   [ ${#kept[@]} -gt 0 ] || bad "--match '$match' matches no variant (of: ${variants[*]})"
   variants=("${kept[@]}")
+fi
+
+# The netlist check replays co-simulation frames: it needs hwinterp (not for
+# a block, which has no netlist check).
+hw=$build/tb/hwinterp
+cores_chosen=0
+for v in "${variants[@]}"; do [ -n "${is_block[$v]+x}" ] || cores_chosen=1; done
+if [ "$check" -eq 1 ] && [ $cores_chosen -eq 1 ]; then
+  echo "synth: building hwinterp for the netlist check (log: $out/build.log)" >&2
+  cmake --build "$build" -j "${HWINTERP_JOBS:-2}" --target hwinterp >"$out/build.log" 2>&1 ||
+    die "step 'build hwinterp' failed; see $out/build.log"
 fi
 
 # The peers: name (= its Verilog module) -> axes; scripts/synth/peers/ writes them.
@@ -326,6 +343,7 @@ for variant in "${variants[@]}" "${peers[@]}"; do
     read -r core params_kv <<<"${vline[$variant]}"
     [ -n "${yfiles[$core]+x}" ] || prepare_core "$core"
     vcheck=$check
+    [ -z "${is_block[$variant]+x}" ] || vcheck="n/a (block, not a lockstep core)"
   fi
   read -r -a kvs <<<"$params_kv"
   chparam=""

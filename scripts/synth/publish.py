@@ -9,7 +9,11 @@ Usage: publish.py [--check] [--variants FILE] [SYNTH_JSON...]
                 same variants in docs/synth.json. Results of --generic-only runs
                 are refused: the table needs the iCE40 figures.
   --variants F  the build's generated/variants.txt: every variant it lists must
-                be published, and no other (checked with --check)
+                be published, and no other (checked with --check); the blocks of
+                blocks.txt beside it (hwinterp_synth_block in cmake/cores.cmake:
+                synthesized, not lockstep cores, e.g. feed_profile) may be
+                published too, after the variants, and are checked like them
+                once published (their RTL, their rows)
   --check       write nothing; exit 1 if a table or block is not what docs/synth.json
                 renders, if a published variant was measured on RTL other than
                 today's rtl/<core>.f files (rtl_sha256), or if a variant is missing
@@ -244,6 +248,12 @@ def read_variants(path):
         fail("cannot read --variants %s: %s" % (path, e))
 
 
+def read_blocks(vfile):
+    """The blocks of blocks.txt beside a variants.txt (none without the file)."""
+    path = os.path.join(os.path.dirname(os.path.abspath(vfile)), "blocks.txt")
+    return read_variants(path) if os.path.exists(path) else []
+
+
 def main(argv):
     check, vfile, inputs = False, None, []
     args = list(argv[1:])
@@ -281,7 +291,8 @@ def main(argv):
     peers = [peer_by_name[v] for v in sorted(peer_by_name)]
     # Without --variants, the published order (then new variants by name), so a
     # plain merge renders the table as a --check --variants run does.
-    order = read_variants(vfile) if vfile else \
+    cores_order = read_variants(vfile) if vfile else []
+    order = cores_order + read_blocks(vfile) if vfile else \
         [r["variant"] for r in published] + sorted(v for v in by_name if v not in
                                                   {r["variant"] for r in published})
     results = [by_name[v] for v in order if v in by_name]
@@ -290,8 +301,8 @@ def main(argv):
     problems = []
     if vfile:
         problems += ["%s: not published (run scripts/synth.sh --variant %s, then publish.py "
-                     "its synth.json)" % (v, v) for v in order if v not in by_name]
-        problems += ["%s: published but not a variant of cmake/cores.cmake" % v
+                     "its synth.json)" % (v, v) for v in cores_order if v not in by_name]
+        problems += ["%s: published but not a variant or block of cmake/cores.cmake" % v
                      for v in by_name if v not in order]
     for p in peers:
         info = p.get("peer") or {}
