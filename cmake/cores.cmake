@@ -75,4 +75,9 @@ hwinterp_synth_block(NAME motion_soc_axil_n3 TOP motion_soc_axil FILES motion_so
   VARIANT motion_top_n3 PARAMS FIFO_DEPTH=16)
 hwinterp_synth_block(NAME motion_soc_wb_n3 TOP motion_soc_wb FILES motion_soc YOSYS yowasp
   VARIANT motion_top_n3 PARAMS FIFO_DEPTH=16)
+# feed_profile: the jerk-limited feed profile (docs/profile.md) at the widths
+# the harness runs it (tb/lockstep/harness_profile.h; rtl/CMakeLists.txt
+# Verilates Vfeed_profile_harness_cc from this line).
+hwinterp_synth_block(NAME feed_profile TOP feed_profile FILES feed_profile
+  PARAMS FEED_W=24 SPD_W=48 TICK_W=10 LEN_W=10 LVL_W=16 OPS_W=28)
 hwinterp_finish_variants()

@@ -90,7 +90,8 @@ endfunction()
 # of the core variant VARIANT (declared before it), then PARAMS;
 # YOSYS the Yosys of its generic step and iCE40 mapping (default debian, as
 # the cores; yowasp for RTL Debian's Yosys does not read). One line of
-# generated/blocks.txt: <row> <module> <list> <yosys> K=V...
+# generated/blocks.txt: <row> <module> <list> <yosys> K=V...; the global
+# property HWINTERP_BLOCK_<row>_GFLAGS holds its -G flags.
 function(hwinterp_synth_block)
   cmake_parse_arguments(B "" "NAME;TOP;FILES;YOSYS;VARIANT" "PARAMS" ${ARGN})
   if(NOT B_NAME OR NOT B_TOP OR NOT B_FILES)
@@ -112,6 +113,12 @@ function(hwinterp_synth_block)
     endif()
   endif()
   list(APPEND params ${B_PARAMS})
+  # Its -G flags, for a Verilated build at the same widths (rtl/CMakeLists.txt).
+  set(gflags "")
+  foreach(kv IN LISTS params)
+    list(APPEND gflags "-G${kv}")
+  endforeach()
+  set_property(GLOBAL PROPERTY HWINTERP_BLOCK_${B_NAME}_GFLAGS "${gflags}")
   string(REPLACE ";" " " params_line "${params}")
   file(APPEND ${HWINTERP_GENERATED_DIR}/blocks.txt.in
     "${B_NAME} ${B_TOP} ${B_FILES} ${B_YOSYS} ${params_line}\n")

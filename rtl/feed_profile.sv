@@ -10,16 +10,32 @@
 //     distance R (ops << (SPD_W - TICK_W)) runs out; the next starts there;
 //   - hold_i brings the speed to rest within the same limits; release resumes.
 //
-// How the RTL gets the HLS face's numbers: the braking rule compares products
-// of up to SPD_W + LEN_W + 2*LVL_W bits. They depend only on state that is
-// fixed for a whole tick (the command in force at the next boundary is known a
-// tick ahead: hls/feed_profile.h moves commands next -> current before
-// pending -> next), so one sequential shift-add multiplier computes them
-// during the tick (SEQ_CLOCKS clocks, checked against 2^TICK_W below), and the
-// boundary clock only chooses among registered results. The last L levels
-// live in a block RAM (prim_ram_1r1w), read one clock after each boundary;
-// words not written since reset read as 0 (a high-water mark), as the HLS
-// face's ring starts at 0.
+// How the RTL gets the HLS face's numbers. Everything the boundary clock
+// (t = 0) decides depends on state fixed for the whole tick before it (the
+// command in force at the next boundary is known a tick ahead:
+// hls/feed_profile.h moves commands next -> current before pending -> next),
+// except hold_i, which is sampled on the boundary clock itself. So one
+// sequential multiply-accumulate unit (MAC: P = P0 + A * B, B's bits LSB
+// first, one a clock) computes, during the tick, the level and the speed the
+// boundary would give for hold_i low and for hold_i high, and the boundary
+// clock only chooses between two registers. The arithmetic that follows a
+// boundary (the distance R less this tick's travel, the ring word q * c) is
+// done by the same MAC at the start of the next tick; R is internal, so no
+// output sees the difference. Per tick, in order (SEQ_CLOCKS clocks, checked
+// against 2^TICK_W below):
+//   R     ~R = ~rp + (q L) c_new   (R is held inverted: ~(a - b) = ~a + b)
+//   QC    q c_new, written to the ring word of the boundary just passed
+//   QL    q L
+//   X0    e (L - 1) + (c + e - 1)(c - e) [c > e] + c * 2 (1 + w)
+//   X1    X0 + c * 2 (L - w + [c >= e]) + 2 (L + 1)
+//   F1 F0 fits: (q L) X <= 2 rp, as (q L) X + ~(2 rp) < 2^RW (no overflow)
+//   GO    the next level for hold low and high (registers)
+//   V0 V1 v + q c' - q c_old for each of them
+// The MAC's accumulator is cut in two halves with the carry between them
+// registered (added on the next clock, and once more after the last bit), so
+// no carry chain is longer than about RW / 2. The last L levels live in a
+// block RAM (prim_ram_1r1w); words not written since reset read as 0 (a
+// high-water mark), as the HLS face's ring starts at 0.
 module feed_profile #(
   parameter int FEED_W = 16,  // feed word fraction bits, as feed_accum (>= 1)
   parameter int SPD_W  = 48,  // speed fraction bits (FEED_W < SPD_W <= 62)
@@ -28,8 +44,8 @@ module feed_profile #(
   parameter int LVL_W  = 16,  // speed level bits (2..24)
   parameter int OPS_W  = 28   // operations of a move (2..40)
 ) (
-  input  logic              clk_i,
-  input  logic              rst_ni,
+  input  logic              clk_i,           // the clock
+  input  logic              rst_ni,          // asynchronous reset, active low
   // configuration, latched while the block is at rest (busy_o low)
   input  logic [SPD_W-1:0]  q_i,             // speed quantum: ops/clock * 2^SPD_W (jerk a tick^2)
   input  logic [LEN_W:0]    len_i,           // L, ticks of the moving sum (0 acts as 1, capped at 2^LEN_W)
@@ -49,19 +65,26 @@ module feed_profile #(
   localparam int DROP = SPD_W - FEED_W;            // speed bits below the feed word
   localparam int RSH = SPD_W - TICK_W;             // R = ops << RSH
   localparam int RW = OPS_W + RSH + 2;             // R, signed
+  localparam int RHW = RW - RSH;                   // R's bits at and above the move's LSB
   localparam int MAXLEN = 1 << LEN_W;
   localparam int AGE_W = LEN_W + 2;                // counts up to MAXLEN + 1
   localparam int QL_W = SPD_W + LEN_W + 1;         // q * L
-  localparam int XW = ((2 * LVL_W > LVL_W + LEN_W) ? 2 * LVL_W : LVL_W + LEN_W) + 4;
-  localparam int MW = QL_W + XW;                   // product width
-  localparam int CW = (MW > RW + 1) ? MW : RW + 1; // compare width
-  localparam int SEQ_CLOCKS = 9 * 2 + (LEN_W + 1) * 2 + 3 * LVL_W + 2 * (LEN_W + 2) + 2 * XW + 2;
+  localparam int VW = SPD_W + 1;                   // v, q * c
+  localparam int XW = ((2 * LVL_W > LVL_W + LEN_W) ? 2 * LVL_W : LVL_W + LEN_W) + 4;  // X0, X1
+  // the MAC's accumulator: every result above fits (mod 2^PW where stated)
+  localparam int PW0 = (RW + 1 > QL_W) ? RW + 1 : QL_W;
+  localparam int PW1 = (PW0 > VW + 1) ? PW0 : VW + 1;
+  localparam int PW = (PW1 > XW) ? PW1 : XW;
+  localparam int PLW = PW / 2;                     // its low half
+  localparam int PHW = PW - PLW;
+  // clocks from the boundary to the last result, with a margin (see the header)
+  localparam int SEQ_CLOCKS = 5 * LVL_W + 4 * LEN_W + 2 * XW + 47;
 
 `ifndef __ICARUS__
   if (FEED_W < 1 || SPD_W <= FEED_W || SPD_W > 62) begin : g_bad_spd_w
     $error("feed_profile: parameters need 1 <= FEED_W < SPD_W <= 62");
   end
-  if (TICK_W >= SPD_W || TICK_W > 24 || (1 << TICK_W) < SEQ_CLOCKS + 2) begin : g_bad_tick_w
+  if (TICK_W >= SPD_W || TICK_W > 24 || (1 << TICK_W) < SEQ_CLOCKS) begin : g_bad_tick_w
     $error("feed_profile: parameter TICK_W: 2^TICK_W clocks must hold the sequencer's clocks");
   end
   if (LEN_W < 1 || LEN_W > 16) begin : g_bad_len_w
@@ -77,7 +100,8 @@ module feed_profile #(
 
   // ---- state ----
   logic [TICK_W-1:0] t_q, t_d;                 // clock within the tick; 0: the boundary
-  logic [SPD_W:0]    v_q, v_d;                 // speed
+  logic              bnd_q, bnd_d;             // t_q == 0 (a register: it enables much)
+  logic [VW-1:0]     v_q, v_d;                 // speed
   logic [DROP-1:0]   acc_q, acc_d;             // dither of the dropped speed bits
   logic [FEED_W:0]   feed_q, feed_d;
   logic [LVL_W-1:0]  c_q, c_d;                 // level
@@ -85,7 +109,8 @@ module feed_profile #(
   logic [LEN_W:0]    hw_q, hw_d;               // ring words written since reset
   logic [AGE_W-1:0]  up_age_q, up_age_d;       // ticks since the last +1 (saturates at MAXLEN + 1)
   logic [AGE_W-1:0]  quiet_q, quiet_d;         // ticks since the last step of c (saturates)
-  logic signed [RW-1:0] r_q, r_d;              // distance left of the current move
+  logic [RW-1:0]     nr_q, nr_d;               // ~R: the distance left of the current move, inverted
+  logic [RW-1:0]     nrp_q, nrp_d;             // ~R after the next boundary's promotion
   logic              cur_q, cur_d, next_q, next_d, pend_q, pend_d;
   logic [LVL_W-1:0]  cur_tgt_q, cur_tgt_d, cur_end_q, cur_end_d;
   logic [OPS_W-1:0]  next_ops_q, next_ops_d, pend_ops_q, pend_ops_d;
@@ -93,175 +118,316 @@ module feed_profile #(
   logic [LVL_W-1:0]  pend_tgt_q, pend_tgt_d, pend_end_q, pend_end_d;
   logic [SPD_W-1:0]  q_q, q_d;                 // configuration in force
   logic [LEN_W:0]    len_q, len_d;
-  // the sequencer: one shift-add multiplier, phases 1..9, then done (10)
-  logic [3:0]        ph_q, ph_d;
-  logic              load_q, load_d;           // load the operands of phase ph_q
-  logic [5:0]        cnt_q, cnt_d;             // multiplier bits left
-  logic [MW-1:0]     mul_a_q, mul_a_d, mul_p_q, mul_p_d;
-  logic [XW-1:0]     mul_b_q, mul_b_d;
+  // what the next boundary promotes (fixed for the tick once R is known)
+  logic              promote_q, promote_d, curp_q, curp_d;
+  // the boundary just passed, for the arithmetic that follows it
+  logic              curb_q, curb_d, upb_q, upb_d, dnb_q, dnb_d;
+  logic [LEN_W-1:0]  idxb_q, idxb_d;
+  // the next boundary's choices: [0] hold_i low, [1] hold_i high
+  logic [1:0]        gu_q, gu_d, gd_q, gd_d;
+  logic [VW-1:0]     vn0_q, vn0_d, vn1_q, vn1_d;   // the speed
+  logic [XW-1:0]     x0_q, x0_d;
   logic [QL_W-1:0]   ql_q, ql_d;               // q * L
-  logic [SPD_W:0]    qc_q, qc_d;               // q * c (mod 2^(SPD_W+1), as the speed)
-  logic [RW-1:0]     qlc_q, qlc_d;             // q * L * c (mod 2^RW, as R)
-  logic [2*LVL_W:0]  brk2_q, brk2_d;           // 2 B(c, e) = (c + e - 1)(c - e), 0 when c <= e
-  logic [LVL_W+LEN_W+1:0] cw_q, cw_d;          // c * (1 + w_hold)
-  logic [LVL_W+LEN_W+1:0] cl_q, cl_d;          // c * (1 + L)
-  logic [LVL_W+LEN_W:0]   el_q, el_d;          // e * (L - 1)
   logic              fits0_q, fits0_d, fits1_q, fits1_d;
-  logic signed [RW-1:0] rp_q, rp_d;            // R after the next boundary's promotion
   logic              rvalid_q, rvalid_d;       // the ring word read was written since reset
+  // the sequencer and its MAC
+  logic [4:0]        ph_q, ph_d;               // the operation in progress
+  // (The clocks that load and capture are known a clock ahead: registers.)
+  logic              load_q, load_d;           // load the operands of lop_q on this clock
+  logic [4:0]        lop_q, lop_d;
+  logic              cap_q, cap_d;             // ph_q's results are ready: capture them
+  logic              run_q, run_d;             // the MAC is stepping (cnt_q != 0)
+  logic [5:0]        cnt_q, cnt_d;             // clocks left: B's bits, then one for the last carry
+  logic [PW-1:0]     ma_q, ma_d;               // A, shifted left a bit a clock
+  logic              ma_over_q, ma_over_d;     // A has shifted a one out of its top
+  logic [XW-1:0]     mb_q, mb_d;               // B, shifted right a bit a clock
+  logic [PLW-1:0]    pl_q, pl_d;               // P, low half
+  logic [PHW-1:0]    ph_hi_q, ph_hi_d;         // P, high half
+  logic              pc_q, pc_d;               // the carry from the low half, due in the high half
+  logic              ci_q, ci_d;               // a carry into bit 0 on the first bit
+  logic              pover_q, pover_d;         // P has overflowed 2^PW (before the last clock)
+  logic              pco_q, pco_d;             // the high half's carry out on the last clock
+
+  localparam logic [4:0] OpIdle = 5'd0, OpR = 5'd1, OpQc = 5'd2, OpQl = 5'd3, OpEl = 5'd4,
+                         OpBrk = 5'd5, OpCw = 5'd6, OpD1 = 5'd7, OpD2 = 5'd8, OpF1 = 5'd9,
+                         OpF0 = 5'd10, OpGo = 5'd11, OpGo2 = 5'd12, OpV0a = 5'd13, OpV0b = 5'd14,
+                         OpV1a = 5'd15, OpV1b = 5'd16;
 
   // ---- the ring RAM: {dc up, dc down, q*c (SPD_W + 1 bits)} per tick ----
   logic              ram_we, ram_re;
   logic [SPD_W+2:0]  ram_wdata, ram_rdata;
+  logic [PW-1:0]     p_full;
+  assign p_full = {ph_hi_q, pl_q};
   prim_ram_1r1w #(.WIDTH(SPD_W + 3), .DEPTH(MAXLEN)) u_ring (
     .clk_i   (clk_i),
     .we_i    (ram_we),
-    .waddr_i (idx_q),
+    .waddr_i (idxb_q),
     .wdata_i (ram_wdata),
     .re_i    (ram_re),
     .raddr_i (idx_q),
     .rdata_o (ram_rdata)
   );
+  assign ram_wdata = {upb_q, dnb_q, p_full[VW:1]};
 
-  // ---- what the next boundary promotes (fixed for the whole tick) ----
-  logic moving, r_done, promote, cur_p, busy, rest, boundary;
-  logic [LVL_W-1:0] tgt_p, end_p;
-  assign moving   = (c_q != '0) || (v_q != '0);
-  assign r_done   = (r_q <= 0);
-  assign promote  = (!cur_q || r_done) && next_q;
-  assign cur_p    = promote || (cur_q && !r_done);
-  assign tgt_p    = promote ? next_tgt_q : cur_tgt_q;
-  assign end_p    = promote ? next_end_q : cur_end_q;
+  logic rd_up, rd_dn;
+  logic [VW-1:0] qc_old;
+  assign rd_up  = rvalid_q && ram_rdata[SPD_W+2];
+  assign rd_dn  = rvalid_q && ram_rdata[SPD_W+1];
+  assign qc_old = rvalid_q ? ram_rdata[SPD_W:0] : '0;
+
+  logic busy, rest, boundary;
   assign busy     = cur_q || next_q || pend_q || (v_q != '0) || ({1'b0, quiet_q} <= {2'b0, len_q});
   assign rest     = !busy;
-  assign boundary = (t_q == '0);
+  assign boundary = bnd_q;
+  assign bnd_d    = (t_q == '1);
+
+  // ---- the next boundary's promotion, from R (valid after OpR) ----
+  // (r_done and moving are registers, valid from the second clock of OpQc,
+  // which writes promote_q and nrp_q on each of its clocks: the last wins.)
+  logic r_done, promote, moving, r_done_d, moving_d, r_done_q, moving_q;
+  logic [LVL_W-1:0] tgt_p, end_p, end_p_d;
+  logic [RHW-1:0] ops_r;
+  assign r_done_d = !nr_q[RW-1] || (nr_q == '1);   // R <= 0
+  assign r_done   = r_done_q;
+  assign promote = (!cur_q || r_done) && next_q;
+  assign moving_d = (c_q != '0) || (v_q != '0);
+  assign moving   = moving_q;
+  assign ops_r   = RHW'(next_ops_q);
+  assign end_p_d = promote_q ? next_end_q : cur_end_q;
+  assign end_p   = end_p_q;
 
   // w_hold: ticks c must still hold before a -1 may follow the last +1
-  logic [LEN_W:0] w_hold;
-  assign w_hold = ({1'b0, up_age_q} >= {2'b0, len_q}) ? '0 : len_q - up_age_q[LEN_W:0];
+  // (The small operands are registers: their inputs are fixed for the tick
+  // from OpQc on, and the first to use them is OpEl.)
+  logic             aged;
+  logic [LEN_W+1:0] w1x2_d, lw1x2_d, w1x2_q, lw1x2_q;
+  assign aged  = ({1'b0, up_age_q} >= {2'b0, len_q});
+  // 2 (1 + w) and 2 (L - w + [c >= e]); L - w is L when aged, else up_age
+  assign w1x2_d  = aged ? (LEN_W + 2)'(2) : {len_q - up_age_q[LEN_W:0] + (LEN_W + 1)'(1), 1'b0};
+  assign lw1x2_d = {(aged ? len_q : up_age_q[LEN_W:0]) + (LEN_W + 1)'(c_q >= end_p), 1'b0};
 
-  // ---- the sequencer's operands ----
-  logic [XW-1:0] x0, x1, bc1x2;
-  // 2 B(c+1, e) = 2 B(c, e) + 2c when c >= e, else 0
-  assign bc1x2 = (c_q >= end_p) ? XW'(brk2_q) + XW'({c_q, 1'b0}) : '0;
-  // X0 = 2 (c (1 + w) + B(c, e)) + e (L - 1); X1 the same for c + 1 and w = L
-  assign x0 = XW'({cw_q, 1'b0}) + XW'(brk2_q) + XW'(el_q);
-  assign x1 = XW'({cl_q, 1'b0}) + XW'({len_q, 1'b0}) + XW'(2) + bc1x2 + XW'(el_q);
+  // ---- the next boundary's choices for hold_i low (0) and high (1) ----
+  // Two clocks: the compares (registered), then the choices. hold_i high:
+  // free, target and end 0 (only down, when the reversal rule allows).
+  // (The target and the floor for hold_i low are registers too.)
+  logic free0;
+  logic [LVL_W-1:0] tgt_e, floor_lvl, tgt_e_d, floor_d, tgt_e_q, floor_q;
+  assign free0     = !curp_q;
+  assign tgt_p     = promote_q ? next_tgt_q : cur_tgt_q;
+  assign tgt_e_d   = free0 ? '0 : tgt_p;
+  // the end level if not free, else 0; at least 1 when not free
+  assign floor_d   = free0 ? '0 : ((end_p != '0) ? end_p : LVL_W'(1));
+  assign tgt_e     = tgt_e_q;
+  assign floor_lvl = floor_q;
+  logic             lt_q, lt_d, gt_q, gt_d, gtf_q, gtf_d, cz_q, cz_d, cmax_q, cmax_d;
+  logic             f0_q, f0_d, f1_q, f1_d;
+  logic [LVL_W-1:0] cp1_q, cp1_d, cm1_q, cm1_d;
+  logic [1:0]       go_up_c, go_dn_c;
+  logic [LVL_W-1:0] cn0, cn1;                  // the level after the boundary (for OpV0a, OpV1a)
+  assign go_up_c[0] = lt_q && !rd_dn && !cmax_q && (f1_q || cz_q);
+  assign go_dn_c[0] = !go_up_c[0] && !cz_q && !rd_up && (gt_q || (gtf_q && !f0_q));
+  assign go_up_c[1] = 1'b0;
+  assign go_dn_c[1] = !cz_q && !rd_up;
+  assign cn0 = gu_q[0] ? cp1_q : (gd_q[0] ? cm1_q : c_q);
+  assign cn1 = gd_q[1] ? cm1_q : c_q;
 
-  logic [LVL_W-1:0] c_minus_e;
-  assign c_minus_e = c_q - end_p;
-
-  logic signed [CW-1:0] r2;  // 2 R after promotion, for the compares
-  assign r2 = CW'(rp_q) <<< 1;
+  // ---- the MAC: operands of the operation loaded this clock ----
+  logic            cap, load;
+  logic [4:0]      nxt, lop;
+  logic [PW-1:0]   la, lp;
+  logic [XW-1:0]   lb;
+  logic            lc;
+  logic [5:0]      lk;
+  logic [LVL_W-1:0] end_p_q;                  // the end level after the promotion
+  logic [LVL_W:0]  cpe_d, cpe_q;                 // (c + e - 1) when c > e, else 0
+  assign cpe_d = (c_q > end_p) ? {1'b0, c_q} + {1'b0, end_p} - (LVL_W + 1)'(1) : '0;
+  logic [LEN_W:0]  lm1_d, lm1_q;                 // L - 1
+  logic [LEN_W:0]  lp1_d, lp1_q;               // L + 1 (L < 2^(LEN_W+1) - 1)
+  logic [LVL_W-1:0] cme_d, cme_q;                // c - e (used when c > e)
+  logic [VW-1:0]   nqc_old;                    // ~(q c_old): + 1 below, so - q c_old
+  assign lm1_d     = len_q - (LEN_W + 1)'(1);
+  assign lp1_d     = len_q + (LEN_W + 1)'(1);
+  assign cme_d     = c_q - end_p;
+  assign nqc_old = ~qc_old;
+  logic [LVL_W:0]  c2;                         // 2 c
+  logic [RW:0]     nrp1;                       // ~(2 rp) = 2 ~rp + 1
+  assign c2      = {c_q, 1'b0};
+  assign nrp1    = {nrp_q, 1'b1};
+  // the capture clock of ph_q: its bits and its flush done
+  // cap: the clock after a MAC operation's last bit, and GO and GO2 right after OpF0
+  assign cap    = cap_q;
+  assign cap_d  = (run_q && (cnt_q == 6'd1)) || (cap_q && ((ph_q == OpF0) || (ph_q == OpGo)));
+  assign nxt    = (ph_q == OpV1b) ? OpIdle : ph_q + 5'd1;
+  // load: at t = 1 (OpR), after GO2 (OpV0a), and with the capture of every MAC
+  // operation but the last of a run (OpF0, OpV1b), the next one
+  assign lop    = lop_q;
+  assign load   = load_q;
+  assign load_d = bnd_q || (cap_q && (ph_q == OpGo2)) ||
+                  (run_q && (cnt_q == 6'd1) && (ph_q != OpF0) && (ph_q != OpV1b));
+  assign lop_d  = bnd_q ? OpR : nxt;
 
   always_comb begin
-    ph_d    = ph_q;
-    load_d  = 1'b0;
-    cnt_d   = cnt_q;
-    mul_a_d = mul_a_q;
-    mul_b_d = mul_b_q;
-    mul_p_d = mul_p_q;
-    ql_d    = ql_q;
-    qc_d    = qc_q;
-    qlc_d   = qlc_q;
-    brk2_d  = brk2_q;
-    cw_d    = cw_q;
-    cl_d    = cl_q;
-    el_d    = el_q;
-    fits0_d = fits0_q;
-    fits1_d = fits1_q;
-    rp_d    = rp_q;
-    if (t_q == TICK_W'(1)) begin
-      // Start: the promotion's R, then phase 1.
-      if (promote) rp_d = (cur_q && moving) ? r_q + (RW'(next_ops_q) <<< RSH) : (RW'(next_ops_q) <<< RSH);
-      else rp_d = r_q;
-      ph_d   = 4'd1;
-      load_d = 1'b1;
-    end else if (load_q) begin
-      mul_p_d = '0;
+    la = '0;
+    lb = '0;
+    lp = '0;
+    lc = 1'b0;
+    lk = '0;
+    unique case (lop)
+      OpR:   begin la = curb_q ? PW'(ql_q) : '0; lb = XW'(c2); lp = PW'(nrp1); lk = 6'(LVL_W + 1); end
+      OpQc:  begin la = PW'(q_q);   lb = XW'(c2);                               lk = 6'(LVL_W + 1); end
+      OpQl:  begin la = PW'(q_q);   lb = XW'(len_q);                            lk = 6'(LEN_W + 1); end
+      OpEl:  begin la = PW'(end_p); lb = XW'(lm1_q);                              lk = 6'(LEN_W + 1); end
+      OpBrk: begin la = PW'(cpe_q); lb = XW'(cme_q);          lp = p_full;       lk = 6'(LVL_W); end
+      OpCw:  begin la = PW'(c_q);   lb = XW'(w1x2_q);         lp = p_full;       lk = 6'(LEN_W + 2); end
+      OpD1:  begin la = PW'(c_q);   lb = XW'(lw1x2_q);         lp = p_full;       lk = 6'(LEN_W + 2); end
+      OpD2:  begin la = PW'(lp1_q); lb = XW'(2);      lp = p_full;       lk = 6'd2; end
+      OpF1:  begin la = PW'(ql_q);  lb = p_full[XW-1:0];     lp = PW'(nrp1);      lk = 6'(XW); end
+      OpF0:  begin la = PW'(ql_q);  lb = x0_q;               lp = PW'(nrp1);      lk = 6'(XW); end
+      OpV0a: begin la = PW'(q_q);   lb = XW'(cn0);            lp = PW'(v_q);     lk = 6'(LVL_W); end
+      OpV1a: begin la = PW'(q_q);   lb = XW'(cn1);            lp = PW'(v_q);     lk = 6'(LVL_W); end
+      OpV0b, OpV1b: begin la = PW'(nqc_old); lb = XW'(1);    lp = p_full; lc = 1'b1; lk = 6'd1; end
+      default: ;
+    endcase
+  end
+
+  // ---- the MAC and the sequencer ----
+  logic            mbit;
+  logic [PLW:0]    sum_lo;
+  logic [PHW:0]    sum_hi;
+  // B holds no bits above its count: it is 0 on the last clock (the flush)
+  assign mbit   = mb_q[0];
+  assign sum_lo = {1'b0, pl_q} + {1'b0, mbit ? ma_q[PLW-1:0] : PLW'(0)} + (PLW + 1)'(ci_q);
+  assign sum_hi = {1'b0, ph_hi_q} + {1'b0, mbit ? ma_q[PW-1:PLW] : PHW'(0)} + (PHW + 1)'(pc_q);
+
+  logic over_rw;  // (q L) X > 2 rp: the candidate does not fit
+  // {~rp, 1} is 2^RW + ~(2 rp) when rp >= 0: it fits when P stays below 2^(RW + 1)
+  assign over_rw = pover_q || pco_q || ((p_full >> (RW + 1)) != '0);
+
+  always_comb begin
+    ph_d      = ph_q;
+    run_d     = run_q;
+    cnt_d     = cnt_q;
+    ma_d      = ma_q;
+    ma_over_d = ma_over_q;
+    mb_d      = mb_q;
+    pl_d      = pl_q;
+    ph_hi_d   = ph_hi_q;
+    pc_d      = pc_q;
+    ci_d      = 1'b0;
+    pover_d   = pover_q;
+    pco_d     = pco_q;
+    nr_d      = nr_q;
+    nrp_d     = nrp_q;
+    promote_d = promote_q;
+    curp_d    = curp_q;
+    ql_d      = ql_q;
+    x0_d      = x0_q;
+    fits0_d   = fits0_q;
+    fits1_d   = fits1_q;
+    gu_d      = gu_q;
+    lt_d      = lt_q;
+    gt_d      = gt_q;
+    gtf_d     = gtf_q;
+    cz_d      = cz_q;
+    cmax_d    = cmax_q;
+    f0_d      = f0_q;
+    f1_d      = f1_q;
+    cp1_d     = cp1_q;
+    cm1_d     = cm1_q;
+    gd_d      = gd_q;
+    vn0_d     = vn0_q;
+    vn1_d     = vn1_q;
+    ram_we    = 1'b0;
+    ram_re    = 1'b0;
+    if (run_q) begin
+      // A bit of B (the last clock, with B empty: the last carry only).
+      pl_d      = sum_lo[PLW-1:0];
+      pc_d      = sum_lo[PLW];
+      ph_hi_d   = sum_hi[PHW-1:0];
+      pco_d     = sum_hi[PHW];
+      pover_d   = pover_q || pco_q || (mbit && ma_over_q);
+      ma_d      = ma_q << 1;
+      ma_over_d = ma_over_q || ma_q[PW-1];
+      mb_d      = mb_q >> 1;
+      cnt_d     = cnt_q - 6'd1;
+      run_d     = (cnt_q != 6'd1);
+    end
+    if (ph_q == OpQc) begin
+      // R is known: the next boundary's promotion and R after it.
+      promote_d = promote;
+      curp_d    = promote || (cur_q && !r_done);
+      if (!promote) nrp_d = nr_q;
+      else if (cur_q && moving) nrp_d = {nr_q[RW-1:RSH] - ops_r, nr_q[RSH-1:0]};
+      else nrp_d = {~ops_r, {RSH{1'b1}}};
+    end
+    if (cap) begin
       unique case (ph_q)
-        4'd1: begin mul_a_d = MW'(q_q);   mul_b_d = XW'(len_q);  cnt_d = 6'(LEN_W + 1); end
-        4'd2: begin mul_a_d = MW'(q_q);   mul_b_d = XW'(c_q);    cnt_d = 6'(LVL_W); end
-        4'd3: begin mul_a_d = MW'(ql_q);  mul_b_d = XW'(c_q);    cnt_d = 6'(LVL_W); end
-        4'd4: begin
-          mul_a_d = (c_q > end_p) ? MW'(c_q) + MW'(end_p) - MW'(1) : '0;
-          mul_b_d = XW'(c_minus_e);
-          cnt_d   = 6'(LVL_W);
+        OpR:   nr_d = p_full[RW:1];
+        OpQc:  ram_we = 1'b1;
+        OpQl:  begin ql_d = p_full[QL_W-1:0]; ram_re = 1'b1; end
+        OpCw:  x0_d = p_full[XW-1:0];
+        OpF1:  fits1_d = nrp_q[RW-1] && !over_rw;
+        OpF0:  fits0_d = nrp_q[RW-1] && !over_rw;
+        OpGo: begin
+          lt_d   = c_q < tgt_e;
+          gt_d   = c_q > tgt_e;
+          gtf_d  = c_q > floor_lvl;
+          cz_d   = c_q == '0;
+          cmax_d = c_q == '1;
+          f0_d   = free0 || fits0_q;
+          f1_d   = free0 || fits1_q;
+          cp1_d  = c_q + LVL_W'(1);
+          cm1_d  = c_q - LVL_W'(1);
         end
-        4'd5: begin mul_a_d = MW'(c_q);   mul_b_d = XW'(w_hold) + XW'(1); cnt_d = 6'(LEN_W + 2); end
-        4'd6: begin mul_a_d = MW'(c_q);   mul_b_d = XW'(len_q) + XW'(1);  cnt_d = 6'(LEN_W + 2); end
-        4'd7: begin mul_a_d = MW'(end_p); mul_b_d = XW'(len_q) - XW'(1);  cnt_d = 6'(LEN_W + 1); end
-        4'd8: begin mul_a_d = MW'(ql_q);  mul_b_d = x0;          cnt_d = 6'(XW); end
-        4'd9: begin mul_a_d = MW'(ql_q);  mul_b_d = x1;          cnt_d = 6'(XW); end
-        default: begin mul_a_d = '0;      mul_b_d = '0;          cnt_d = '0; end
-      endcase
-    end else if (cnt_q != '0) begin
-      // One bit a clock, the multiplier's LSB first.
-      if (mul_b_q[0]) mul_p_d = mul_p_q + mul_a_q;
-      mul_a_d = mul_a_q << 1;
-      mul_b_d = mul_b_q >> 1;
-      cnt_d   = cnt_q - 6'd1;
-    end else if (ph_q >= 4'd1 && ph_q <= 4'd9) begin
-      // Phase ph_q done: keep its product, then the next phase.
-      unique case (ph_q)
-        4'd1: ql_d   = QL_W'(mul_p_q);
-        4'd2: qc_d   = (SPD_W + 1)'(mul_p_q);
-        4'd3: qlc_d  = RW'(mul_p_q);
-        4'd4: brk2_d = (2 * LVL_W + 1)'(mul_p_q);
-        4'd5: cw_d   = (LVL_W + LEN_W + 2)'(mul_p_q);
-        4'd6: cl_d   = (LVL_W + LEN_W + 2)'(mul_p_q);
-        4'd7: el_d   = (LVL_W + LEN_W + 1)'(mul_p_q);
-        4'd8: fits0_d = !rp_q[RW-1] && (CW'(mul_p_q) <= r2);
-        4'd9: fits1_d = !rp_q[RW-1] && (CW'(mul_p_q) <= r2);
+        OpGo2: begin
+          gu_d = go_up_c;
+          gd_d = go_dn_c;
+        end
+        OpV0b: vn0_d = p_full[VW-1:0];
+        OpV1b: vn1_d = p_full[VW-1:0];
         default: ;
       endcase
-      ph_d   = ph_q + 4'd1;
-      load_d = (ph_q != 4'd9);
+      ph_d = nxt;
+    end
+    if (load) begin
+      ph_d      = lop;
+      ma_d      = la;
+      ma_over_d = 1'b0;
+      mb_d      = lb;
+      pl_d      = lp[PLW-1:0];
+      ph_hi_d   = lp[PW-1:PLW];
+      pc_d      = 1'b0;
+      ci_d      = lc;
+      pover_d   = 1'b0;
+      pco_d     = 1'b0;
+      cnt_d     = lk + 6'd1;
+      run_d     = 1'b1;
     end
   end
 
-  // ---- the boundary: the level's step, R, the speed, the ring ----
-  logic free, up_ok, down_ok, fits0, fits1, go_up, go_down, rd_up, rd_dn;
-  logic [LVL_W-1:0] floor_lvl, tgt_e, end_e;
-  logic [SPD_W:0]   qc_old;
-  logic [SPD_W:0]   qc_new;
-  logic [RW-1:0]    qlc_new;
-  assign free      = hold_i || !cur_p;
-  assign tgt_e     = free ? '0 : tgt_p;
-  assign end_e     = free ? '0 : end_p;
-  assign floor_lvl = (end_e != '0) ? end_e : (free ? '0 : LVL_W'(1));
-  assign rd_up     = rvalid_q && ram_rdata[SPD_W+2];
-  assign rd_dn     = rvalid_q && ram_rdata[SPD_W+1];
-  assign qc_old    = rvalid_q ? ram_rdata[SPD_W:0] : '0;
-  assign up_ok     = !rd_dn;
-  assign down_ok   = !rd_up;
-  assign fits0     = free || fits0_q;
-  assign fits1     = free || fits1_q;
-  assign go_up     = (c_q < tgt_e) && up_ok && (c_q != '1) && (fits1 || (c_q == '0));
-  assign go_down   = !go_up && (c_q != '0) && down_ok &&
-                     ((c_q > tgt_e) || ((c_q > floor_lvl) && !fits0));
-  assign qc_new    = go_up ? qc_q + (SPD_W + 1)'(q_q) :
-                     go_down ? qc_q - (SPD_W + 1)'(q_q) : qc_q;
-  assign qlc_new   = go_up ? qlc_q + RW'(ql_q) :
-                     go_down ? qlc_q - RW'(ql_q) : qlc_q;
-  assign ram_we    = boundary;
-  assign ram_wdata = {go_up, go_down, qc_new};
-  assign ram_re    = (t_q == TICK_W'(1));
+  // ---- the boundary: the level, the speed, the commands, the ring position ----
+  logic go_up, go_down;
+  assign go_up   = hold_i ? gu_q[1] : gu_q[0];
+  assign go_down = hold_i ? gd_q[1] : gd_q[0];
 
-  logic [DROP:0] dsum;
+  // The feed word: the speed's top bits plus the dither's carry, chosen
+  // between v_hi and v_hi + 1 (two carry chains side by side, not in a row).
+  logic [DROP:0]   dsum;
+  logic [FEED_W:0] vhi, vhi1;
   assign dsum = {1'b0, acc_q} + {1'b0, v_q[DROP-1:0]};
+  assign vhi  = v_q[SPD_W:DROP];
+  assign vhi1 = vhi + (FEED_W + 1)'(1);
 
   always_comb begin
     t_d        = t_q + TICK_W'(1);
     acc_d      = dsum[DROP-1:0];
-    feed_d     = v_q[SPD_W:DROP] + (FEED_W + 1)'(dsum[DROP]);
+    feed_d     = dsum[DROP] ? vhi1 : vhi;
     v_d        = v_q;
     c_d        = c_q;
     idx_d      = idx_q;
     hw_d       = hw_q;
     up_age_d   = up_age_q;
     quiet_d    = quiet_q;
-    r_d        = r_q;
     cur_d      = cur_q;
     next_d     = next_q;
     pend_d     = pend_q;
@@ -275,16 +441,20 @@ module feed_profile #(
     pend_end_d = pend_end_q;
     q_d        = q_q;
     len_d      = len_q;
+    curb_d     = curb_q;
+    upb_d      = upb_q;
+    dnb_d      = dnb_q;
+    idxb_d     = idxb_q;
     rvalid_d   = rvalid_q;
     if (ram_re) rvalid_d = ({1'b0, idx_q} < hw_q);
     if (boundary) begin
       // Commands: next -> current, then pending -> next.
-      cur_d = cur_p;
-      if (promote) begin
+      cur_d = curp_q;
+      if (promote_q) begin
         cur_tgt_d = next_tgt_q;
         cur_end_d = next_end_q;
       end
-      next_d = next_q && !promote;
+      next_d = next_q && !promote_q;
       if (!next_d && pend_q) begin
         next_d     = 1'b1;
         next_ops_d = pend_ops_q;
@@ -292,9 +462,12 @@ module feed_profile #(
         next_end_d = pend_end_q;
         pend_d     = 1'b0;
       end
-      r_d = cur_p ? rp_q - $signed(qlc_new) : rp_q;
-      c_d = go_up ? c_q + LVL_W'(1) : (go_down ? c_q - LVL_W'(1) : c_q);
-      v_d = v_q + qc_new - qc_old;
+      c_d    = go_up ? c_q + LVL_W'(1) : (go_down ? c_q - LVL_W'(1) : c_q);
+      v_d    = hold_i ? vn1_q : vn0_q;
+      curb_d = curp_q;
+      upb_d  = go_up;
+      dnb_d  = go_down;
+      idxb_d = idx_q;
       idx_d = ({1'b0, idx_q} + (LEN_W + 1)'(1) == len_q) ? '0 : idx_q + LEN_W'(1);
       if ({1'b0, idx_q} >= hw_q) hw_d = {1'b0, idx_q} + (LEN_W + 1)'(1);
       up_age_d = go_up ? AGE_W'(1) :
@@ -318,7 +491,36 @@ module feed_profile #(
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
+      cpe_q   <= '0;
+      end_p_q <= '0;
+      r_done_q <= 1'b0;
+      moving_q <= 1'b0;
+      tgt_e_q <= '0;
+      floor_q <= '0;
+      cme_q   <= '0;
+      lm1_q   <= '0;
+      lp1_q   <= '0;
+      w1x2_q  <= '0;
+      lw1x2_q <= '0;
+    end else begin
+      cpe_q   <= cpe_d;
+      end_p_q <= end_p_d;
+      r_done_q <= r_done_d;
+      moving_q <= moving_d;
+      tgt_e_q <= tgt_e_d;
+      floor_q <= floor_d;
+      cme_q   <= cme_d;
+      lm1_q   <= lm1_d;
+      lp1_q   <= lp1_d;
+      w1x2_q  <= w1x2_d;
+      lw1x2_q <= lw1x2_d;
+    end
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
       t_q        <= '0;
+      bnd_q      <= 1'b1;
       v_q        <= '0;
       acc_q      <= '0;
       feed_q     <= '0;
@@ -327,7 +529,8 @@ module feed_profile #(
       hw_q       <= '0;
       up_age_q   <= '1;  // any count above MAXLEN is "long ago"; it stays there
       quiet_q    <= '1;
-      r_q        <= '0;
+      nr_q       <= '1;  // R = 0
+      nrp_q      <= '1;
       cur_q      <= 1'b0;
       next_q     <= 1'b0;
       pend_q     <= 1'b0;
@@ -341,25 +544,48 @@ module feed_profile #(
       pend_end_q <= '0;
       q_q        <= '0;
       len_q      <= 1;
-      ph_q       <= '0;
-      load_q     <= 1'b0;
-      cnt_q      <= '0;
-      mul_a_q    <= '0;
-      mul_b_q    <= '0;
-      mul_p_q    <= '0;
+      promote_q  <= 1'b0;
+      curp_q     <= 1'b0;
+      curb_q     <= 1'b0;
+      upb_q      <= 1'b0;
+      dnb_q      <= 1'b0;
+      idxb_q     <= '0;
+      gu_q       <= '0;
+      lt_q       <= 1'b0;
+      gt_q       <= 1'b0;
+      gtf_q      <= 1'b0;
+      cz_q       <= 1'b0;
+      cmax_q     <= 1'b0;
+      f0_q       <= 1'b0;
+      f1_q       <= 1'b0;
+      cp1_q      <= '0;
+      cm1_q      <= '0;
+      gd_q       <= '0;
+      vn0_q      <= '0;
+      vn1_q      <= '0;
+      x0_q       <= '0;
       ql_q       <= '0;
-      qc_q       <= '0;
-      qlc_q      <= '0;
-      brk2_q     <= '0;
-      cw_q       <= '0;
-      cl_q       <= '0;
-      el_q       <= '0;
       fits0_q    <= 1'b0;
       fits1_q    <= 1'b0;
-      rp_q       <= '0;
       rvalid_q   <= 1'b0;
+      ph_q       <= '0;  // OpIdle
+      load_q     <= 1'b0;
+      lop_q      <= '0;
+      cap_q      <= 1'b0;
+      run_q      <= 1'b0;
+      cnt_q      <= '0;
+      ma_q       <= '0;
+      ma_over_q  <= 1'b0;
+      mb_q       <= '0;
+      pl_q       <= '0;
+      ph_hi_q    <= '0;
+      pc_q       <= 1'b0;
+      ci_q       <= 1'b0;
+      pover_q    <= 1'b0;
+      pco_q      <= 1'b0;
     end else begin
       t_q        <= t_d;
+      bnd_q      <= bnd_d;
       v_q        <= v_d;
       acc_q      <= acc_d;
       feed_q     <= feed_d;
@@ -368,7 +594,8 @@ module feed_profile #(
       hw_q       <= hw_d;
       up_age_q   <= up_age_d;
       quiet_q    <= quiet_d;
-      r_q        <= r_d;
+      nr_q       <= nr_d;
+      nrp_q      <= nrp_d;
       cur_q      <= cur_d;
       next_q     <= next_d;
       pend_q     <= pend_d;
@@ -382,23 +609,45 @@ module feed_profile #(
       pend_end_q <= pend_end_d;
       q_q        <= q_d;
       len_q      <= len_d;
-      ph_q       <= ph_d;
-      load_q     <= load_d;
-      cnt_q      <= cnt_d;
-      mul_a_q    <= mul_a_d;
-      mul_b_q    <= mul_b_d;
-      mul_p_q    <= mul_p_d;
+      promote_q  <= promote_d;
+      curp_q     <= curp_d;
+      curb_q     <= curb_d;
+      upb_q      <= upb_d;
+      dnb_q      <= dnb_d;
+      idxb_q     <= idxb_d;
+      gu_q       <= gu_d;
+      lt_q       <= lt_d;
+      gt_q       <= gt_d;
+      gtf_q      <= gtf_d;
+      cz_q       <= cz_d;
+      cmax_q     <= cmax_d;
+      f0_q       <= f0_d;
+      f1_q       <= f1_d;
+      cp1_q      <= cp1_d;
+      cm1_q      <= cm1_d;
+      gd_q       <= gd_d;
+      vn0_q      <= vn0_d;
+      vn1_q      <= vn1_d;
+      x0_q       <= x0_d;
       ql_q       <= ql_d;
-      qc_q       <= qc_d;
-      qlc_q      <= qlc_d;
-      brk2_q     <= brk2_d;
-      cw_q       <= cw_d;
-      cl_q       <= cl_d;
-      el_q       <= el_d;
       fits0_q    <= fits0_d;
       fits1_q    <= fits1_d;
-      rp_q       <= rp_d;
       rvalid_q   <= rvalid_d;
+      ph_q       <= ph_d;
+      load_q     <= load_d;
+      lop_q      <= lop_d;
+      cap_q      <= cap_d;
+      run_q      <= run_d;
+      cnt_q      <= cnt_d;
+      ma_q       <= ma_d;
+      ma_over_q  <= ma_over_d;
+      mb_q       <= mb_d;
+      pl_q       <= pl_d;
+      ph_hi_q    <= ph_hi_d;
+      pc_q       <= pc_d;
+      ci_q       <= ci_d;
+      pover_q    <= pover_d;
+      pco_q      <= pco_d;
     end
   end
 

@@ -15,6 +15,11 @@
 #                 and the engine's progress (rtl/formal/core_checks.sv),
 #                 attached by the props file or instantiated in the RTL's
 #                 `ifdef FORMAL` block, and the invariants in those blocks
+#   feed_profile  rtl/feed_profile.sv (a block, not a core) against
+#                 rtl/formal/feed_profile_props.sv: reset state, the level
+#                 and the speed change only on a tick boundary (the level by
+#                 one), the feed word, the move handshake (a taken move is
+#                 never lost or overwritten)
 #
 # Usage: scripts/formal.sh [--blocks LIST] [--depth N] [--tim-w "W..."] [--out DIR]
 #   --blocks LIST  blocks to check (default "stepdir_axis step_stage", the
@@ -44,7 +49,8 @@ usage() { sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2; exit 2; }
 
 stage_blocks=(stepdir_axis step_stage)
 core_blocks=(dda_line ppc_line ppc_arc fixed_ratio motion_top log_stepper)
-all_blocks=("${stage_blocks[@]}" "${core_blocks[@]}")
+other_blocks=(feed_profile)  # rtl/<block>.f, no core contract
+all_blocks=("${stage_blocks[@]}" "${core_blocks[@]}" "${other_blocks[@]}")
 
 depth=""
 widths="3 4"
@@ -96,6 +102,9 @@ declare -A block_files=(
 )
 for core in "${core_blocks[@]}"; do
   block_files[$core]="$(sed -n "/^[^#]/s|^|$root/rtl/|p" "$root/rtl/$core.f" | tr '\n' ' ')$root/rtl/formal/core_contract.sv $root/rtl/formal/core_checks.sv"
+done
+for b in "${other_blocks[@]}"; do
+  block_files[$b]="$(sed -n "/^[^#]/s|^|$root/rtl/|p" "$root/rtl/$b.f" | paste -sd ' ')"
 done
 # Signals a proof links across the hierarchy after flattening (Yosys 0.23 has
 # neither `bind` nor hierarchical references): each `// link: A=B ...` line of

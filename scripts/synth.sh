@@ -38,7 +38,10 @@
 #                    nextpnr-ice40 0.4); the table records the seed as not routed
 #
 # Per variant (parameters from variants.txt, the configure-time copy of
-# cmake/cores.cmake; RTL files from rtl/<core>.f):
+# cmake/cores.cmake; RTL files from rtl/<core>.f). A block (blocks.txt:
+# hwinterp_synth_block in cmake/cores.cmake, e.g. feed_profile) is a module
+# that is not a lockstep core: steps 1-5 as a variant's, no netlist check
+# (step 6 replays a core's co-simulated frames; a block has none).
 #   1. Yosys `synth -flatten -top <core>`: generic cells by type.
 #   2. (ice40) `synth_ice40 -top <core>`: LUT4 / SB_CARRY / flip-flops of the
 #      bare core.
