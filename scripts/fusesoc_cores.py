@@ -4,8 +4,9 @@ lists (rtl/<core>.f), or checks that the committed ones are what they give.
 
 usage: scripts/fusesoc_cores.py [--check]
 
-One core file per list: hwinterp:cores:<core> for every core, and
-hwinterp:soc:motion_soc for motion_soc behind its register blocks. Targets:
+One core file per list: hwinterp:cores:<core> for every core,
+hwinterp:soc:motion_soc for motion_soc behind its register blocks, and
+hwinterp:blocks:feed_profile for the feed profile. Targets:
 
   default  the RTL files, in the list's order
   lint     Verilator --lint-only -Wall at the core's default parameters
@@ -42,7 +43,15 @@ DESCRIPTIONS = {
     "motion_top": "hwinterp motion_top: lines, arcs and helices in one core, step/dir outputs",
     "motion_soc": "hwinterp motion_soc: motion_top behind a PeakRDL register block "
                   "(AXI4-Lite or Wishbone), command FIFO, timebase, watchdog",
+    "feed_profile": "hwinterp feed_profile: jerk-limited feed profile (S-curve or trapezoid) "
+                    "for a core's feed input",
 }
+# The library part of each VLNV (hwinterp:<library>:<core>); cores by default.
+LIBRARY = {"motion_soc": "soc", "feed_profile": "blocks"}
+
+
+def vlnv_of(core):
+    return f"hwinterp:{LIBRARY.get(core, 'cores')}:{core}:{VERSION}"
 
 
 def files_of(core):
@@ -53,7 +62,7 @@ def files_of(core):
 def core_file(core):
     soc = core == "motion_soc"
     top = "motion_soc_axil" if soc else core
-    vlnv = f"hwinterp:{'soc' if soc else 'cores'}:{core}:{VERSION}"
+    vlnv = vlnv_of(core)
     L = [
         "CAPI=2:",
         f"# Generated from rtl/{core}.f by {ME}; do not edit.",
@@ -158,7 +167,7 @@ def main(argv):
         out = subprocess.run([fusesoc, "core", "list"], cwd=ROOT, capture_output=True,
                              text=True).stdout
         for core in cores():
-            vlnv = f"hwinterp:{'soc' if core == 'motion_soc' else 'cores'}:{core}:{VERSION}"
+            vlnv = vlnv_of(core)
             if vlnv not in out:
                 stale.append(vlnv)
                 print(f"{vlnv}: not in `fusesoc core list`")
