@@ -714,11 +714,13 @@ std::string summary_table(const PartProgramSetup& setup, const PartProgramRun& r
   }
   const Kinematics& k = run.kinematics;
   // The estimator needs three whole windows for a jerk (its second difference).
-  if (k.windows < 3)
+  if (k.windows < 3) {
     s.add_row({"peak speed, accel, jerk", "not estimated: the run is shorter than three " +
                                               fmt("%g", k.window_s * 1e3) + " ms windows (" +
                                               std::to_string(k.windows) + ")"});
-  for (const KinematicRow& row : k.windows < 3 ? std::vector<KinematicRow>{} : k.rows) {
+    return s.render();
+  }
+  for (const KinematicRow& row : k.rows) {
     auto cell = [&](const KinematicPeak& p, const char* per) {
       std::string c = fmt("%.4g", p.max) + " " + row.unit + per;
       if (std::isfinite(p.limit)) c += " (limit " + fmt("%.4g", p.limit) + ")";
