@@ -482,9 +482,16 @@ PartProgramRun run_part_program(const PartProgramSetup& setup) {
       throw cli::UsageError("--profile: the feed profile's build gives " +
                             std::to_string(tb::kProfileFeedW) + "-bit feed words; " + l.variant +
                             " takes FEED_W " + std::to_string(l.feed_w));
+    uint32_t moved = 0;  // the axes the program moves: their limits set the profile's
+    {
+      auto src = open_source(setup);
+      MotionCompiler pass(*src, setup.machine, widths, setup.feed_mode, setup.program);
+      models::MotionCommand mc;
+      while (pass.next(mc)) moved |= motion_moved_axes(mc, l.axes);
+    }
     planner = std::make_unique<ProfilePlanner>(
         setup.machine, l.axes, tb::feed_profile_build(static_cast<double>(setup.machine.clock_hz)),
-        setup.profile_window, l.feed_w);
+        setup.profile_window, l.feed_w, moved);
     plan_source = open_source(setup);
     plan_compiler = std::make_unique<MotionCompiler>(*plan_source, setup.machine, widths,
                                                      setup.feed_mode, setup.program);

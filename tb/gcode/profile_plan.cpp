@@ -25,8 +25,17 @@ void plane_rate(Steps& s, const std::array<int, 2>& ax, double tx, double ty) {
 
 }  // namespace
 
+uint32_t motion_moved_axes(const models::MotionCommand& c, int axes) {
+  uint32_t m = 0;
+  for (int i = 0; i < axes; ++i)
+    if (c.delta[static_cast<size_t>(i)] != 0) m |= 1u << i;
+  if (c.kind == models::MotionKind::kArc)
+    for (int a : models::motion_plane_axes(c.plane)) m |= 1u << a;
+  return m;
+}
+
 ProfilePlanner::ProfilePlanner(const Machine& machine, int axes, const models::ProfileBuild& build,
-                               size_t window, int feed_w)
+                               size_t window, int feed_w, uint32_t moved)
     : machine_(machine),
       axes_(axes),
       build_(build),
@@ -42,9 +51,11 @@ ProfilePlanner::ProfilePlanner(const Machine& machine, int axes, const models::P
       throw cli::UsageError("--machine: the feed profile needs max_accel for axis " + name);
     if (machine_.profile == ProfileKind::kScurve && !std::isfinite(l.jerk))
       throw cli::UsageError("--machine: the S-curve profile needs max_jerk for axis " + name);
+    if (!(moved >> i & 1)) continue;
     a = std::min(a, l.accel * spu);
     j = std::min(j, l.jerk * spu);
   }
+  if (!std::isfinite(a)) a = j = 1;  // nothing moves: any registers do
   accel_ = kAccelShare * a;
   jerk_ = machine_.profile == ProfileKind::kScurve ? kAccelShare * j : 1e30;
   tick_s_ = std::ldexp(1.0, build_.tick_w) / build_.clock_hz;

@@ -4,9 +4,10 @@
 // commands ahead (look-ahead).
 //
 // Limits. The profile's acceleration and jerk are one pair for the whole
-// program (its registers change only at rest): 0.8 of the smallest axis
-// limit, in steps (an axis moves at most one step an engine operation, so no
-// axis goes faster than the path in operations); the 0.2 left is for the
+// program (its registers change only at rest): 0.8 of the smallest limit, in
+// steps, of the axes the program moves (an axis moves at most one step an
+// engine operation, so no axis goes faster than the path in operations; an
+// axis the program never moves sees nothing); the 0.2 left is for the
 // centripetal terms on arcs. Per command, the cruise speed (operations/s) is
 // the programmed one (its feed word) capped by every axis's velocity limit
 // projected on the command (axis speed = path speed * steps of the axis per
@@ -49,12 +50,18 @@ struct ProfileCommand {
   double target_speed = 0;  // operations/s before rounding to a level (for reports)
 };
 
+// The axes a command moves, as bits: a line's axes with steps, an arc's plane
+// axes and its slaved axes with steps.
+uint32_t motion_moved_axes(const models::MotionCommand& c, int axes);
+
 class ProfilePlanner {
  public:
   // Throws cli::UsageError naming the key when an axis of `machine` lacks a
-  // limit the profile needs (max_accel; max_jerk for an S-curve).
+  // limit the profile needs (max_accel; max_jerk for an S-curve). `moved`:
+  // bit i set when the program moves axis i (motion_moved_axes); the
+  // program's acceleration and jerk come from those axes' limits only.
   ProfilePlanner(const Machine& machine, int axes, const models::ProfileBuild& build, size_t window,
-                 int feed_w);
+                 int feed_w, uint32_t moved);
   const models::ProfileRegisters& registers() const { return regs_; }
   double accel() const { return accel_; }  // the profile's acceleration, operations/s^2
   double jerk() const { return jerk_; }    // and jerk, operations/s^3
