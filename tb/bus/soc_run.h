@@ -118,6 +118,24 @@ void reset_soc(Model& m, BeforeEdge&& before_edge) {
   m.rst_ni = 1;
 }
 
+// One clock of a Verilated SoC top with its bus master and HLS shadow: the
+// master drives the bus pins, the falling edge settles, the master and the
+// shadow sample the pins, the rising edge; then the shadow compares (clock:
+// the count it reports a difference at). Returns motion_top's done_o.
+template <class Probe, class Model, class Master, class Shadow>
+bool soc_clock(Model& m, Master& master, Shadow& shadow, uint64_t clock) {
+  master.drive(m);
+  m.clk_i = 0;
+  m.eval();
+  master.sample(m);
+  shadow.before_edge(m);
+  m.clk_i = 1;
+  m.eval();
+  const bool done = Probe::done(m);
+  shadow.after_edge(m, done, clock);
+  return done;
+}
+
 template <class Model, template <class> class Master, class Probe, class Src, class Sink,
           class Shadow>
 SocRunResult run_soc(Src& src, const SocSetup& setup, Sink& sink, Shadow& shadow,
@@ -140,16 +158,7 @@ SocRunResult run_soc(Src& src, const SocSetup& setup, Sink& sink, Shadow& shadow
   BusRsp rsp;
   while (r.clocks < max_clocks) {
     if (master.idle() && host.next(t, m.irq_o)) master.issue(t);
-    master.drive(m);
-    m.clk_i = 0;
-    m.eval();
-    master.sample(m);
-    shadow.before_edge(m);
-    m.clk_i = 1;
-    m.eval();
-    ++r.clocks;
-    const bool done = Probe::done(m);
-    shadow.after_edge(m, done, r.clocks);
+    const bool done = soc_clock<Probe>(m, master, shadow, ++r.clocks);
     if (shadow.failed()) break;
     if (master.take(rsp)) host.response(rsp);
     const uint32_t step = m.out_a_o & mask, dir = m.out_b_o & mask;

@@ -189,6 +189,7 @@ void random_traffic(uint64_t seed, int axes, int commands, uint32_t max_wait) {
   };
   master.drive(m);
   bus::reset_soc(m, [](Model&) {});
+  bus::NoShadow no_shadow;  // the bus alone: no HLS face here
 
   struct Op {
     bus::BusTxn t;
@@ -305,13 +306,7 @@ void random_traffic(uint64_t seed, int axes, int commands, uint32_t max_wait) {
         ++transactions;
       }
     }
-    master.drive(m);
-    m.clk_i = 0;
-    m.eval();
-    master.sample(m);
-    m.clk_i = 1;
-    m.eval();
-    ++clocks;
+    bus::soc_clock<Probe>(m, master, no_shadow, ++clocks);
     bus::BusRsp rsp;
     if (master.take(rsp)) {
       in_flight = false;
@@ -486,15 +481,7 @@ void random_lockstep(uint64_t seed, uint64_t clocks) {
     if (estop_left == 0 && uni(0, 19999) == 0) estop_left = static_cast<uint64_t>(uni(1, 20));
     m.estop_i = estop_left > 0;
     if (estop_left) --estop_left;
-    master.drive(m);
-    m.clk_i = 0;
-    m.eval();
-    master.sample(m);
-    shadow.before_edge(m);
-    m.clk_i = 1;
-    m.eval();
-    const bool done = Probe::done(m);
-    shadow.after_edge(m, done, c);
+    const bool done = bus::soc_clock<Probe>(m, master, shadow, c);
     const auto& mm = shadow.mismatch();
     ASSERT_FALSE(shadow.failed()) << "seed " << seed << ": clock " << mm.clock << " " << mm.what
                                   << " HLS " << mm.hls << " RTL " << mm.rtl;
