@@ -26,6 +26,7 @@
 #include "tb/base/case_result.h"
 #include "tb/base/out_pins.h"
 #include "tb/lockstep/bench_options.h"
+#include "tb/lockstep/case_profile.h"
 #include "tb/lockstep/frame.h"
 #include "tb/lockstep/payload_pins.h"
 #include "tb/lockstep/profile_feed.h"
@@ -127,7 +128,7 @@ class Bench {
       frame_.set_cmd(typename A::Command{});
       cmd_loaded_ = false;
     }
-    frame_.feed = options_.profile_feed ? options_.profile_feed->clock() : settings_.feed;
+    frame_.feed = profile_ ? profile_->clock() : settings_.feed;
     if (setup_changed_) {
       frame_.set_setup(settings_.setup);
       setup_changed_ = false;
@@ -172,6 +173,8 @@ class Bench {
       const bool moved = scoreboard_->observe(cycle_, seen, r);
       if (moved) {
         if (step_times_) step_times_->write(cycle_, scoreboard_->rising(), seen.dir);
+        if (case_profile_)
+          case_profile_->pulses(cycle_ - case_start_cycle_, scoreboard_->rising(), seen.dir);
         if (path_csv_) path_row("move", scoreboard_->position(), scoreboard_->last_error());
         if (options_.record_path) r.visited.push_back(scoreboard_->position());
         if (options_.observer) {
@@ -206,9 +209,8 @@ class Bench {
         break;
     }
     // A feed hold of the profile pauses the engine: its clocks are extra.
-    const uint64_t held = options_.profile_feed ? options_.profile_feed->hold_clocks() : 0;
-    if (r.cycles > budget_ + held ||
-        (options_.profile_feed && last_busy_ && options_.profile_feed->stranded())) {
+    const uint64_t held = profile_ ? profile_->hold_clocks() : 0;
+    if (r.cycles > budget_ + held || (profile_ && last_busy_ && profile_->stranded())) {
       r.timed_out = true;
       end_case();
     }
@@ -268,6 +270,14 @@ class Bench {
     abort_open_ = false;
     monitors_ = StepdirMonitors(spec_.axes);
     scoreboard_.emplace(spec_, c.start, case_start_cycle_);
+    // A case's own profile; a run's (hwinterp gcode) spans its cases.
+    case_profile_.reset();
+    profile_ = options_.profile_feed;
+    if (c.profile && !profile_) {
+      case_profile_ = std::make_unique<CaseProfileRun<A>>(c, spec_);
+      profile_ = &case_profile_->feed();
+      budget_ += case_profile_->budget();
+    }
     case_clock_start_ = 0;  // set by the case's first frame
     path_target_ = c.start;
     path_row("start", c.start);
@@ -276,6 +286,7 @@ class Bench {
   void end_case() {
     CaseResult& r = results_.back();
     scoreboard_->finish(r);
+    if (case_profile_) case_profile_->finish(cycle_ - case_start_cycle_, r);
     if (abort_open_)
       record_capped(r.scoreboard_errors, r.scoreboard_error_count,
                     std::string("abort at cycle ") + std::to_string(r.aborts.back().cycle) +
@@ -314,6 +325,8 @@ class Bench {
           next_item();
           return;
         case Kind::kCommand:
+          // After an exact stop of the feed profile, the block comes to rest first.
+          if (profile_ && profile_->holds_next_command(results_.back().commands)) return;
           frame_.cmd_valid = true;
           if (!cmd_loaded_) {
             frame_.set_cmd(it.cmd);
@@ -324,6 +337,7 @@ class Bench {
             // stays unmeasured (idle_after_clocks -1).
             abort_open_ = false;
             scoreboard_->command_taken(it.cmd, settings_.setup);
+            if (case_profile_) case_profile_->command_taken();
             ++results_.back().commands;
             if (path_csv_) ideal_rows(it.cmd);
             A::apply(it.cmd, path_target_);
@@ -518,7 +532,9 @@ class Bench {
   OutPins flip_;            // a fault's copy of the pins (flipped())
   StepdirMonitors monitors_{0};
   std::optional<Scoreboard<A>> scoreboard_;
-  bool abort_open_ = false;  // an abort whose busy_o has not fallen yet
+  std::unique_ptr<CaseProfileRun<A>> case_profile_;  // the case's feed profile (Case::profile)
+  ProfileFeed* profile_ = nullptr;                   // the profile driving feed_i, if any
+  bool abort_open_ = false;                          // an abort whose busy_o has not fallen yet
   uint64_t abort_cycle_ = 0;
   double case_clock_start_ = 0;
 };

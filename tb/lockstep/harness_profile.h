@@ -14,7 +14,13 @@ namespace hwinterp::tb {
 // 50 MHz), 16-bit levels, 28-bit moves.
 inline constexpr int kProfileSpdW = 48, kProfileTickW = 10, kProfileLenW = 10, kProfileLvlW = 16,
                      kProfileOpsW = 28;
-using HarnessProfile = hls::FeedProfile<kProfileFeedW, kProfileSpdW, kProfileTickW, kProfileLenW,
-                                        kProfileLvlW, kProfileOpsW>;
+// The same build with W-bit feed words: the harness builds it at every FEED_W
+// of cmake/cores.cmake's variants (rtl/CMakeLists.txt: Vfeed_profile_f<W>_cc,
+// listed by HWINTERP_PROFILE_FEED_WS in hwinterp_profile_builds.h), so the
+// block drives each core's feed_i at the core's own width.
+template <int W>
+using HarnessProfileAt =
+    hls::FeedProfile<W, kProfileSpdW, kProfileTickW, kProfileLenW, kProfileLvlW, kProfileOpsW>;
+using HarnessProfile = HarnessProfileAt<kProfileFeedW>;
 
 }  // namespace hwinterp::tb

@@ -3,29 +3,38 @@
 #include <algorithm>
 #include <sstream>
 
-#include "Vfeed_profile_harness_cc.h"
+#include <stdexcept>
+#include <string>
+
+#include "hwinterp_profile_builds.h"
 #include "tb/lockstep/harness_profile.h"
 #include "verilated.h"
 
 namespace hwinterp::tb {
 
-using Profile = HarnessProfile;
-
-struct ProfileFeed::Faces {
+template <int W>
+struct ProfileFeed::FacesOf {
   VerilatedContext context;
-  std::unique_ptr<Vfeed_profile_harness_cc> rtl;
-  Profile hls;
-  uint64_t q = 0;
-  unsigned len = 1;
+  std::unique_ptr<typename ProfileRtl<W>::type> rtl;
+  HarnessProfileAt<W> hls;
 };
 
-ProfileFeed::ProfileFeed(uint64_t q, unsigned len, std::function<bool(ProfileWords&)> next)
-    : f_(std::make_unique<Faces>()), next_(std::move(next)) {
-  f_->q = q;
-  f_->len = len;
-  f_->rtl = std::make_unique<Vfeed_profile_harness_cc>(&f_->context);
-  f_->hls.reset();
-  auto& r = *f_->rtl;
+struct ProfileFeed::Faces {
+  uint64_t q = 0;
+  unsigned len = 1;
+#define HWINTERP_PROFILE_FACES(W) std::unique_ptr<FacesOf<W>> f##W;
+  HWINTERP_PROFILE_FEED_WS(HWINTERP_PROFILE_FACES)
+#undef HWINTERP_PROFILE_FACES
+};
+
+namespace {
+
+// Both faces out of reset, the configuration on the RTL's pins.
+template <class F>
+void reset_faces(F& f, uint64_t q, unsigned len) {
+  f.rtl = std::make_unique<typename decltype(f.rtl)::element_type>(&f.context);
+  f.hls.reset();
+  auto& r = *f.rtl;
   r.q_i = q;
   r.len_i = len;
   r.cmd_valid_i = 0;
@@ -39,9 +48,32 @@ ProfileFeed::ProfileFeed(uint64_t q, unsigned len, std::function<bool(ProfileWor
   r.eval();
 }
 
+}  // namespace
+
+ProfileFeed::ProfileFeed(uint64_t q, unsigned len, std::function<bool(ProfileWords&)> next,
+                         int feed_w)
+    : f_(std::make_unique<Faces>()), next_(std::move(next)), feed_w_(feed_w) {
+  f_->q = q;
+  f_->len = len;
+  switch (feed_w) {
+#define HWINTERP_PROFILE_MAKE(W)               \
+  case W:                                      \
+    f_->f##W = std::make_unique<FacesOf<W>>(); \
+    reset_faces(*f_->f##W, q, len);            \
+    return;
+    HWINTERP_PROFILE_FEED_WS(HWINTERP_PROFILE_MAKE)
+#undef HWINTERP_PROFILE_MAKE
+  }
+  throw std::invalid_argument("feed profile: no build with " + std::to_string(feed_w) +
+                              "-bit feed words");
+}
+
 ProfileFeed::~ProfileFeed() {
-  f_->rtl->final();
-  f_->rtl.reset();
+#define HWINTERP_PROFILE_FINAL(W) \
+  if (f_->f##W) f_->f##W->rtl->final();
+  HWINTERP_PROFILE_FEED_WS(HWINTERP_PROFILE_FINAL)
+#undef HWINTERP_PROFILE_FINAL
+  f_.reset();
   Verilated::threadContextp(Verilated::defaultContextp());
 }
 
@@ -50,14 +82,37 @@ void ProfileFeed::hold_between(uint64_t from, uint64_t to) {
   hold_to_ = std::max(from, to);
 }
 
-bool ProfileFeed::busy() const { return f_->hls.busy(); }
+bool ProfileFeed::busy() const {
+  switch (feed_w_) {
+#define HWINTERP_PROFILE_BUSY(W) \
+  case W:                        \
+    return f_->f##W->hls.busy();
+    HWINTERP_PROFILE_FEED_WS(HWINTERP_PROFILE_BUSY)
+#undef HWINTERP_PROFILE_BUSY
+  }
+  return false;
+}
 
 bool ProfileFeed::stranded() const { return rest_clocks_ > (uint64_t(4) << kProfileTickW); }
 
 uint64_t ProfileFeed::clock() {
-  auto& r = *f_->rtl;
-  Profile& h = f_->hls;
-  if (!valid_ && !done_) {
+  switch (feed_w_) {
+#define HWINTERP_PROFILE_STEP(W) \
+  case W:                        \
+    return step(*f_->f##W);
+    HWINTERP_PROFILE_FEED_WS(HWINTERP_PROFILE_STEP)
+#undef HWINTERP_PROFILE_STEP
+  }
+  return 0;
+}
+
+template <int W>
+uint64_t ProfileFeed::step(FacesOf<W>& f) {
+  using Profile = HarnessProfileAt<W>;
+  auto& r = *f.rtl;
+  Profile& h = f.hls;
+  if (stop_open_ && !h.busy()) stop_open_ = false;
+  if (!valid_ && !done_ && !stop_open_ && (!ready_ || ready_())) {
     if (next_(offered_))
       valid_ = true;
     else
@@ -74,15 +129,14 @@ uint64_t ProfileFeed::clock() {
       failure_ = os.str();
     }
   }
-  Profile::Command cmd;
+  typename Profile::Command cmd;
   cmd.ops = offered_.ops;
   cmd.target = offered_.target;
   cmd.end = offered_.end;
   const bool take = valid_ && h.cmd_ready();
   const bool hold = clocks_ >= hold_from_ && clocks_ < hold_to_;
   if (hold && !stop_.stopped) {
-    const double word =
-        static_cast<double>(feed) / static_cast<double>(uint64_t(1) << kProfileFeedW);
+    const double word = static_cast<double>(feed) / static_cast<double>(uint64_t(1) << W);
     if (!stop_.began) stop_ = {true, false, word, 0, 0};
     if (h.state().v == 0) {
       stop_.stopped = true;
@@ -106,6 +160,7 @@ uint64_t ProfileFeed::clock() {
   if (take) {
     valid_ = false;
     ++taken_;
+    stop_open_ = offered_.end == 0;
   }
   ++clocks_;
   rest_clocks_ = done_ && !h.busy() ? rest_clocks_ + 1 : 0;

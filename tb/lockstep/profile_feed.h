@@ -23,16 +23,38 @@ struct ProfileWords {
   uint32_t target = 0, end = 0;
 };
 
+// Exact stops. A move whose end level is 0 is an exact stop: the next move
+// is offered only once the block is at rest (busy_o low), and so is the
+// engine's next command (holds_next_command). The block joins moves at its
+// trapezoid's level: the level is 0 when the move's distance runs out, but
+// the speed, the moving sum of the last L levels, reaches 0 only up to L
+// ticks later, and the distance the block travels past the move's end (less
+// than a tick at level 1) is dropped at rest. A move or a command taken
+// before then would start while the machine still moves: a corner or a
+// reversal passed at speed, and an engine ahead of its profile.
 class ProfileFeed {
  public:
-  // `next` gives the profile's moves in order (false: none left).
-  ProfileFeed(uint64_t q, unsigned len, std::function<bool(ProfileWords&)> next);
+  // `next` gives the profile's moves in order (false: none left). `feed_w`:
+  // the feed word's fraction bits, the FEED_W of the core it drives (a
+  // width of some variant of cmake/cores.cmake: the harness builds the block
+  // at each; tb/lockstep/harness_profile.h); throws std::invalid_argument
+  // for another.
+  ProfileFeed(uint64_t q, unsigned len, std::function<bool(ProfileWords&)> next,
+              int feed_w = kProfileFeedW);
   ~ProfileFeed();
   ProfileFeed(const ProfileFeed&) = delete;
   ProfileFeed& operator=(const ProfileFeed&) = delete;
 
+  // `next` is asked for a move only on clocks where `ready` says so (a
+  // source that knows its moves before it may offer them); unset: always.
+  void source_ready(std::function<bool()> ready) { ready_ = std::move(ready); }
+  // The engine has taken `commands` commands, one a move: its next command
+  // must wait, as the last move taken is an exact stop the block has not
+  // finished (see the top).
+  bool holds_next_command(uint64_t commands) const { return stop_open_ && commands >= taken_; }
   // This clock's feed word (both faces' register), then one clock edge.
   uint64_t clock();
+  int feed_w() const { return feed_w_; }
   bool failed() const { return !failure_.empty(); }
   const std::string& failure() const { return failure_; }  // the first mismatch
   uint64_t moves_taken() const { return taken_; }
@@ -60,11 +82,19 @@ class ProfileFeed {
   bool stranded() const;
 
  private:
+  // Both faces of the block at one feed width (profile_feed.cpp).
   struct Faces;
+  template <int W>
+  struct FacesOf;
+  template <int W>
+  uint64_t step(FacesOf<W>& f);
   std::unique_ptr<Faces> f_;
+  int feed_w_ = kProfileFeedW;
   std::function<bool(ProfileWords&)> next_;
+  std::function<bool()> ready_;
   ProfileWords offered_;
   bool valid_ = false, done_ = false;
+  bool stop_open_ = false;  // an exact stop taken: the next move waits for rest
   uint64_t taken_ = 0, clocks_ = 0, rest_clocks_ = 0;
   uint64_t hold_from_ = 0, hold_to_ = 0;
   HoldStop stop_;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,18 @@ class ItemSource {
   virtual bool next(Item<A>& it) = 0;  // false at the end
 };
 
+// A feed profile in front of the core for the whole case (issue 25;
+// tb/lockstep/case_profile.h): the block's registers, fixed for the case.
+// Each command becomes one rest-to-rest move of exactly its engine
+// operations (A::operations), cruising at the feed word in force when it is
+// offered, capped so the step/dir stage never stalls the engine.
+// The limits: the speed steps by at most one level a tick (the acceleration)
+// and the level is reached over L ticks (the jerk: a level / L a tick^2).
+struct CaseProfile {
+  double level = 0;  // operations/clock of one level (q L / 2^SPD_W, rounded down to q)
+  unsigned len = 1;  // L, ticks of the moving sum (1: a trapezoid)
+};
+
 template <class A>
 struct Case {
   std::string name;
@@ -53,6 +66,7 @@ struct Case {
   RunSettings<A> settings;     // in force from reset
   std::vector<Item<A>> items;
   std::shared_ptr<ItemSource<A>> more;  // items after `items`; null: none
+  std::optional<CaseProfile> profile;   // feed_i from a feed profile; none: the feed word
 };
 
 template <class A>

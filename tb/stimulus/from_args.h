@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,11 @@ RunSettings<A> settings_from_args(const cli::Args& args, const VariantSpec& l) {
   return s;
 }
 
+// --profile, --profile-level, --profile-ticks: the case profile the cases
+// run behind, or none (off, or not given). Throws cli::UsageError naming the
+// bad value.
+std::optional<CaseProfile> profile_from_args(const cli::Args& args);
+
 // The validated cases; `seed` is --random's. Throws cli::UsageError naming
 // the bad value.
 template <class A>
@@ -62,6 +68,19 @@ std::vector<Case<A>> cases_from_args(const cli::Args& args, const VariantSpec& l
     cases = A::cases_from_options(args, l, settings);
   }
   for (const auto& c : cases) validate_case(c, l);
+  if (const std::optional<CaseProfile> p = profile_from_args(args)) {
+    for (auto& c : cases) {
+      for (const auto& it : c.items)
+        if (it.kind == Item<A>::Kind::kAbort ||
+            (it.kind == Item<A>::Kind::kSettings && it.settings.feed == 0))
+          throw cli::UsageError(
+              "--profile: case '" + c.name + "' has " +
+              (it.kind == Item<A>::Kind::kAbort ? "an abort" : "a feed hold") +
+              (it.source_line ? " (line " + std::to_string(it.source_line) + ")" : std::string()) +
+              ": the profile's moves are the commands, each run to its end");
+      put_behind_profile(c, *p);
+    }
+  }
   return cases;
 }
 

@@ -13,9 +13,13 @@
 //   bool job_directive(JobLine<A>&)                     the core's job directives
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "tb/base/args.h"
@@ -105,16 +109,65 @@ Case<A> random_case(const VariantSpec& spec, uint64_t commands, uint64_t seed,
   return c;
 }
 
-// The random part of every core's regression: a seeded stream of `commands`
-// ("random") and the same seed with aborts and feed holds
-// ("random_abort_hold"); nothing when `commands` is 0.
+// Random feed profile limits (Case::profile): one level of 1/250 to 1/16
+// operation a clock (log-uniform), a moving sum of 1 to 24 ticks (1: a
+// trapezoid).
+inline CaseProfile random_profile(Rng& rng) {
+  CaseProfile p;
+  p.level =
+      std::exp(std::log(1.0 / 250) +
+               std::log(250.0 / 16) * static_cast<double>(rng.below(1 << 20)) / double(1 << 20));
+  p.len = static_cast<unsigned>(rng.range(1, 24));
+  return p;
+}
+
+// A core whose commands carry their own feed word (A::follow_feed_input:
+// motion_top's cmd_feed_i, 0 = feed_i) follows the feed input instead.
+template <class A, class = void>
+struct HasFeedInput : std::false_type {};
 template <class A>
-void append_random_streams(std::vector<Case<A>>& cases, const VariantSpec& spec,
-                           uint64_t commands, uint64_t seed) {
+struct HasFeedInput<
+    A, std::void_t<decltype(A::follow_feed_input(std::declval<typename A::Command&>()))>>
+    : std::true_type {};
+
+// Puts the case behind a feed profile with limits `p` (Case::profile): its
+// commands follow feed_i.
+template <class A>
+void put_behind_profile(Case<A>& c, const CaseProfile& p) {
+  c.profile = p;
+  if constexpr (HasFeedInput<A>::value)
+    for (auto& it : c.items)
+      if (it.kind == Item<A>::Kind::kCommand) A::follow_feed_input(it.cmd);
+}
+
+// The profile case of every core's regression ("random_profile"): the
+// first `commands` (at most 40) of the seed's stream, no aborts or feed
+// holds, the case's step/dir timing throughout (a profile's move is planned
+// for the timing it runs with), behind a feed profile with random limits.
+template <class A>
+Case<A> random_profile_case(const VariantSpec& spec, uint64_t commands, uint64_t seed) {
+  using Kind = typename Item<A>::Kind;
+  Case<A> c = random_case<A>(spec, std::min<uint64_t>(commands, 40), seed);
+  c.name = "random_profile";
+  for (auto& it : c.items)
+    if (it.kind == Kind::kSettings) it.settings.timing = c.settings.timing;
+  Rng rng(seed ^ 0x9e3779b97f4a7c15ULL);
+  put_behind_profile(c, random_profile(rng));
+  return c;
+}
+
+// The random part of every core's regression: a seeded stream of `commands`
+// ("random"), the same seed with aborts and feed holds
+// ("random_abort_hold") and behind a feed profile ("random_profile");
+// nothing when `commands` is 0.
+template <class A>
+void append_random_streams(std::vector<Case<A>>& cases, const VariantSpec& spec, uint64_t commands,
+                           uint64_t seed) {
   if (!commands) return;
   cases.push_back(random_case<A>(spec, commands, seed));
   cases.push_back(random_case<A>(spec, commands, seed, {true, true}));
   cases.back().name = "random_abort_hold";
+  cases.push_back(random_profile_case<A>(spec, commands, seed));
 }
 
 // Checks a case against the variant's widths: every command fits the core's
@@ -156,8 +209,8 @@ void validate_case(const Case<A>& c, const VariantSpec& spec) {
       const int64_t rel = next[a] - c.start[a];
       if (rel > spec.pos_max() || rel < spec.pos_min())
         throw cli::UsageError(where + ": axis " + std::to_string(i) + " would reach position " +
-                              std::to_string(next[a]) + ", past the " +
-                              std::to_string(spec.pos_w) + "-bit position counter");
+                              std::to_string(next[a]) + ", past the " + std::to_string(spec.pos_w) +
+                              "-bit position counter");
     }
     at = next;
   }

@@ -323,6 +323,65 @@ TYPED_TEST(Conformance, SystemcMatchesDirect) {
   }
 }
 
+// Behind a feed profile with random limits (issue 25; tb/lockstep/case_profile.h),
+// every core visits the lattice points of the same case at constant feed words,
+// in the same order, and ends exactly; the bench checks the step stream's
+// speed (and, for the line cores, acceleration and jerk) against the profile's
+// limits, and a case fails otherwise. (SystemcMatchesDirect runs the
+// regression's "random_profile" case in both modes.)
+TYPED_TEST(Conformance, FeedProfileKeepsTheLatticePathWithinRandomLimits) {
+  using A = typename TypeParam::Adapter;
+  BenchOptions o;
+  o.record_path = true;
+  for (const uint64_t seed : {11u, 12u}) {
+    const Case<A> profiled = random_profile_case<A>(this->l, 40, seed);
+    Case<A> flat = profiled;
+    flat.profile.reset();
+    const auto rp = run_direct<TypeParam>({profiled}, o);
+    const auto rf = run_direct<TypeParam>({flat}, o);
+    expect_all_pass(rp);
+    expect_all_pass(rf);
+    EXPECT_EQ(rp[0].visited, rf[0].visited) << "seed " << seed;
+    EXPECT_GT(rp[0].cycles, rf[0].cycles) << "seed " << seed;
+    // The limit checks ran: windows were measured.
+    bool checked = false;
+    for (const auto& cc : rp[0].core_checks)
+      if (cc.name == "profile_axis_speed_steps_per_clock") checked = cc.count > 3 && cc.max > 0;
+    EXPECT_TRUE(checked) << describe(rp[0]);
+  }
+}
+
+// The limit check is not idle: the same commands at full feed, with no
+// profile, break the acceleration limit of a slow profile on some axis, as
+// the same estimator measures it.
+TYPED_TEST(Conformance, WithoutTheProfileTheSameCommandsBreakItsLimits) {
+  using A = typename TypeParam::Adapter;
+  Case<A> flat = random_profile_case<A>(this->l, 40, 11);
+  flat.profile.reset();
+  for (auto& it : flat.items)
+    if (it.kind == Item<A>::Kind::kSettings) it.settings.feed = this->l.full_feed();
+  flat.settings.feed = this->l.full_feed();
+  const ProfileClockLimits slow = profile_clock_limits({1.0 / 256, 8});
+  struct Watch : MoveObserver {
+    KinematicsMonitor kin;
+    uint64_t last = 0;
+    Watch(int axes, uint64_t window) : kin(axes, std::vector<double>(axes, 1.0), window) {}
+    void move(const models::LatticePoint&, uint64_t) override {}
+    void done(uint64_t, const models::LatticePoint&) override {}
+    void pulses(uint64_t clock, uint32_t rising, uint32_t dir) override {
+      kin.pulses(clock, rising, dir);
+      last = clock;
+    }
+  } watch(this->l.axes, 4 << kProfileTickW);
+  BenchOptions o;
+  o.observer = &watch;
+  expect_all_pass(run_direct<TypeParam>({flat}, o));
+  watch.kin.finish(watch.last + 1);
+  double accel = 0;
+  for (int i = 0; i < this->l.axes; ++i) accel = std::max(accel, watch.kin.axis(i).accel.value);
+  EXPECT_GT(accel, slow.accel + 2 * watch.kin.tolerance().accel.value);
+}
+
 // The SystemC-mode comparator fails at the injected cycle too.
 TYPED_TEST(Conformance, SystemcInjectedMismatchIsCaught) {
   using A = typename TypeParam::Adapter;

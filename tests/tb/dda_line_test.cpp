@@ -177,7 +177,7 @@ TEST(DdaLine, AbortAtEveryCycleOfALineLandsOnItsPath) {
 // Every dda_line variant through the registry in both modes, the way
 // `hwinterp regress` runs them: the paper lines (plain and half preload) and
 // the two random streams.
-TEST(DdaLine, RegistryRunsEveryVariantInBothModes) { regression_both_modes("dda_line", 3, 18); }
+TEST(DdaLine, RegistryRunsEveryVariantInBothModes) { regression_both_modes("dda_line", 3, 19); }
 
 std::string write_job(const std::string& name, const std::string& text) {
   const std::string path = hwinterp::testing::scratch_dir("job") + "/" + name;

@@ -292,7 +292,7 @@ TEST(FixedRatioWide, NearDiagonalLongLines) {
 // Every fixed_ratio variant through the registry in both modes, the way
 // `hwinterp regress` runs them: the paper lines and the two random streams.
 TEST(FixedRatio, RegistryRunsEveryVariantInBothModes) {
-  regression_both_modes("fixed_ratio", 3, 10);
+  regression_both_modes("fixed_ratio", 3, 11);
 }
 
 // The command line on the narrow variant: a random stream's input frames

@@ -11,9 +11,11 @@
 
 #include "hwinterp_core_adapters.h"
 #include "hwinterp_variants.h"
+#include "tb/lockstep/case_profile.h"
 #include "tb/lockstep/direct.h"
 #include "tb/lockstep/registry.h"
 #include "tb/lockstep/systemc.h"
+#include "tb/monitor/kinematics.h"
 #include "tb/stimulus/delta_commands.h"
 
 namespace hwinterp::tb::testing {

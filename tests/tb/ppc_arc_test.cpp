@@ -297,7 +297,7 @@ TEST(PpcArcJob, ArcDirective) {
   EXPECT_THROW(parse_job<A>(path, l, default_settings<A>(l)), cli::UsageError);
 }
 
-TEST(PpcArcRegistry, RegressionBothModes) { testing::regression_both_modes("ppc_arc", 2, 5); }
+TEST(PpcArcRegistry, RegressionBothModes) { testing::regression_both_modes("ppc_arc", 2, 6); }
 
 }  // namespace
 }  // namespace hwinterp::tb

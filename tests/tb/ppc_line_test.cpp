@@ -197,7 +197,7 @@ TEST(PpcLineJob, LineAndMoveDirectives) {
   EXPECT_NO_THROW(A::validate({{-1024, 1023}}, {0, 0}, l, "x"));
 }
 
-TEST(PpcLineRegistry, RegressionBothModes) { testing::regression_both_modes("ppc_line", 2, 11); }
+TEST(PpcLineRegistry, RegressionBothModes) { testing::regression_both_modes("ppc_line", 2, 12); }
 
 }  // namespace
 }  // namespace hwinterp::tb

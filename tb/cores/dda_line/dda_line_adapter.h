@@ -58,6 +58,11 @@ struct Adapter {
   };
   static void apply(const Command& c, models::LatticePoint& at) { apply_deltas(c, at); }
   static uint64_t work(const Command& c, const VariantSpec&);  // 2^n iterations
+  // The feed ticks (engine operations) the command takes, exactly: a feed
+  // profile's move for it ends on its last (tb/lockstep/case_profile.h).
+  static uint64_t operations(const Command& c, const VariantSpec& l) { return work(c, l); }
+  // Each axis steps a fixed fraction of the operations (a line).
+  static constexpr bool kAxisFollowsPath = true;
 
   // --- stimulus ---------------------------------------------------------------
   // Deltas fit ACC_W (validate_case() checks the end point against POS_W;

@@ -54,6 +54,11 @@ struct Adapter : DeltaPayload<Adapter> {
   // previous command; the hang budget's per-command margin covers them
   // where they do not.)
   static uint64_t work(const Command& c, const VariantSpec&);
+  // The feed ticks (engine operations) the command takes, exactly: a feed
+  // profile's move for it ends on its last (tb/lockstep/case_profile.h).
+  static uint64_t operations(const Command& c, const VariantSpec& l) { return work(c, l); }
+  // Each axis steps a fixed fraction of the operations (a line).
+  static constexpr bool kAxisFollowsPath = true;
 
   // --- stimulus ---------------------------------------------------------------
   // Every octant, axis-parallel and zero-length commands, reversals,

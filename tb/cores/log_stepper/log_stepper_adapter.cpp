@@ -69,6 +69,7 @@ Adapter::Command Adapter::make_command(const models::LogCurveParams& curve,
     ++c.points;
     std::vector<int64_t> d(4);
     for (size_t i = 0; i < 4; ++i) d[i] = p.pos[i] - prev[i];
+    c.operations += models::dda_iterations(d);
     c.work += models::dda_iterations(d) + cycle_clocks / 2 + 1;
     prev = p.pos;
   }

@@ -63,6 +63,7 @@ struct Adapter {
     std::array<int64_t, 4> end{};  // where the curve ends, relative to its start
     uint64_t points = 0;           // coarse points
     uint64_t work = 0;             // DDA iterations plus coarse clocks, at most
+    uint64_t operations = 0;       // DDA iterations of its segments (feed ticks)
   };
   struct Setup {};
 
@@ -115,6 +116,12 @@ struct Adapter {
     for (size_t i = 0; i < 4 && i < at.size(); ++i) at[i] += c.end[i];
   }
   static uint64_t work(const Command& c, const VariantSpec&) { return c.work; }
+  // The feed ticks (engine operations) the command takes, exactly: a feed
+  // profile's move for it ends on its last (tb/lockstep/case_profile.h).
+  static uint64_t operations(const Command& c, const VariantSpec&) { return c.operations; }
+  // The curve turns (and its segments' lengths change) within a command:
+  // axis speed only.
+  static constexpr bool kAxisFollowsPath = false;
 
   // --- stimulus ---------------------------------------------------------------
   static void validate(const Command& c, const models::LatticePoint& from, const VariantSpec& l,

@@ -82,6 +82,15 @@ struct Adapter {
   static void apply(const Command& c, models::LatticePoint& at);
   // Engine operations times the clocks each takes at the command's feed word.
   static uint64_t work(const Command& c, const VariantSpec& l);
+  // The feed ticks (engine operations) the command takes, exactly: a feed
+  // profile's move for it ends on its last (tb/lockstep/case_profile.h).
+  static uint64_t operations(const Command& c, const VariantSpec&) {
+    return models::motion_operations(c);
+  }
+  // Behind a feed profile, a command follows feed_i (cmd_feed_i 0).
+  static void follow_feed_input(Command& c) { c.feed = 0; }
+  // Arcs turn within a command: axis speed only.
+  static constexpr bool kAxisFollowsPath = false;
 
   // --- stimulus ---------------------------------------------------------------
   // Fits the widths: deltas ACC_W, arc coordinates COORD_W, ops OPS_W (and

@@ -66,6 +66,14 @@ uint64_t Adapter::work(const Command& c, const VariantSpec&) {
   return relative_stream(c).operation_bound();
 }
 
+uint64_t Adapter::operations(const Command& c, const VariantSpec&) {
+  models::PpcArcStream s = relative_stream(c);
+  models::StepMove m;
+  while (s.next(m)) {
+  }
+  return s.operations();
+}
+
 void Adapter::validate(const Command& c, const models::LatticePoint& from, const VariantSpec& l,
                        const std::string& where) {
   l.check_fits("cmd_center_i", c.center[0], "centre offset I (centre x - start x)", where);

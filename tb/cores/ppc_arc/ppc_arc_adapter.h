@@ -82,6 +82,11 @@ struct Adapter {
   }
   // Engine operations, at most (models::PpcArcStream::operation_bound()).
   static uint64_t work(const Command& c, const VariantSpec&);
+  // The feed ticks (engine operations) the command takes, exactly: a feed
+  // profile's move for it ends on its last (tb/lockstep/case_profile.h).
+  static uint64_t operations(const Command& c, const VariantSpec&);  // the model's
+  // The direction turns within a command: axis speed only.
+  static constexpr bool kAxisFollowsPath = false;
 
   // --- stimulus ---------------------------------------------------------------
   // Every coordinate fits COORD_W (signed) and the whole circle, centre +-

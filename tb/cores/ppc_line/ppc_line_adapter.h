@@ -49,6 +49,12 @@ struct Adapter : DeltaPayload<Adapter> {
   };
   // |dx| + |dy| operations; a zero-length command takes one.
   static uint64_t work(const Command& c, const VariantSpec&);
+  // The feed ticks (engine operations) the command takes, exactly: a feed
+  // profile's move for it ends on its last (tb/lockstep/case_profile.h).
+  // |dx| + |dy|, and 1 for a command of no step (it still takes a tick).
+  static uint64_t operations(const Command& c, const VariantSpec& l) { return work(c, l); }
+  // Each axis steps a fixed fraction of the operations (a line).
+  static constexpr bool kAxisFollowsPath = true;
 
   // --- stimulus ---------------------------------------------------------------
   // Every octant, axis-parallel and vertical lines, zero-length commands,
