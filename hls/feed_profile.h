@@ -58,19 +58,21 @@
 //   target' = min(ceil(target * ovr / 128), top),  top = max if max != 0, else target
 // where `target` is the programmed level and `max` the move's cap word (the
 // planner's cap by the machine's limits; 0: the target itself, so the
-// override can only slow the move down). Only the target is scaled:
-// the end level and the braking rule are the move's own, so a junction is
-// never entered faster than planned, and at ovr = 128 target' =
-// min(target, top): a move planned as target = min(programmed, cap) with
-// max = 0 (or max = cap) runs bit-identical to one without the override. ceil keeps target' >= 1
-// for any ovr > 0; ovr = 0 gives target' = 0: the level comes down as under
+// override can only slow the move down). Only the target is scaled: the end
+// level and the braking rule are the move's own, so a junction is never
+// entered faster than planned. At ovr = 128 target' = min(target, top): a
+// move given as before (its cruise level as target, max = 0) runs the bits it
+// ran before the override existed, and so does target = programmed, max = cap
+// (tb/gcode/profile_plan.cpp). ceil keeps target' >= 1 for any ovr > 0;
+// ovr = 0 gives target' = 0: the level comes down as under
 // hold_i and rests with the move's distance left until the override rises.
 // Every change is jerk-limited because the override moves only the target:
 // the level still steps by -1, 0, +1 under the reversal rule, and the speed
 // is still the moving sum, so |dv| <= q L and |d2v| <= q hold on every tick
 // whatever the override does. A lower target only adds steps down and removes
 // steps up; both keep a feasible state feasible (docs/profile.md), so each
-// move still ends at or below its end level when its distance runs out.
+// move still ends at or below its end level (1 for a move to rest) when its
+// distance runs out.
 //
 // Per clock the feed word to feed_accum is v >> (SPD_W - FEED_W) plus the
 // carry of a dither accumulator over the dropped bits, so that the ops over
