@@ -50,6 +50,30 @@
 // limits); resume continues. Config (q, L): latched while the block is at
 // rest (nothing queued, v = 0, no step in the window).
 //
+// Feed override ovr (9 bits, factor ovr / 128: 0..256 is 0..200 % in steps of
+// 1/128 = 0.78 %; 257..511 act as 256; kOvrOne = 128 is 100 %). It is sampled
+// on the boundary clock and rules the next boundary (a tick later: the RTL
+// computes a boundary's choices during the tick before it). The cruise level
+// in force is
+//   target' = min(ceil(target * ovr / 128), top),  top = max if max != 0, else target
+// where `target` is the programmed level and `max` the move's cap word (the
+// planner's cap by the machine's limits; 0: the target itself, so the
+// override can only slow the move down). Only the target is scaled: the end
+// level and the braking rule are the move's own, so a junction is never
+// entered faster than planned. At ovr = 128 target' = min(target, top): a
+// move given as before (its cruise level as target, max = 0) runs the bits it
+// ran before the override existed, and so does target = programmed, max = cap
+// (tb/gcode/profile_plan.cpp). ceil keeps target' >= 1 for any ovr > 0;
+// ovr = 0 gives target' = 0: the level comes down as under
+// hold_i and rests with the move's distance left until the override rises.
+// Every change is jerk-limited because the override moves only the target:
+// the level still steps by -1, 0, +1 under the reversal rule, and the speed
+// is still the moving sum, so |dv| <= q L and |d2v| <= q hold on every tick
+// whatever the override does. A lower target only adds steps down and removes
+// steps up; both keep a feasible state feasible (docs/profile.md), so each
+// move still ends at or below its end level (1 for a move to rest) when its
+// distance runs out.
+//
 // Per clock the feed word to feed_accum is v >> (SPD_W - FEED_W) plus the
 // carry of a dither accumulator over the dropped bits, so that the ops over
 // any span are the exact integral of v.
@@ -85,7 +109,16 @@ class FeedProfile {
     ops_t ops = 0;       // engine operations of the move (>= 1)
     level_t target = 0;  // cruise level: speed q * L * target
     level_t end = 0;     // level when the move's last operation is taken
+    level_t max = 0;     // the cap of the cruise level under the override (0: target)
   };
+  static constexpr unsigned kOvrOne = 128;  // the override word of 100 %
+  // The cruise level in force for `target`, `max` and the override word.
+  static uint32_t override_target(uint32_t target, uint32_t max, unsigned ovr) {
+    const uint64_t o = ovr > 2 * kOvrOne ? 2 * kOvrOne : ovr;
+    const uint64_t scaled = (uint64_t(target) * o + kOvrOne - 1) / kOvrOne;
+    const uint64_t top = max != 0 ? max : target;
+    return static_cast<uint32_t>(scaled < top ? scaled : top);
+  }
   // The state compared between the faces every clock.
   struct State {
     uint64_t v = 0, acc = 0, feed = 0;
@@ -112,10 +145,19 @@ class FeedProfile {
     up_age_ = (4u << LEN_W) - 1;  // as the RTL's all-ones reset: above kMaxLen, "long ago"
     quiet_ = (4u << LEN_W) - 1;
     r_ = 0;
+    ends_ = ends_above_ = 0;
+    ovr_ = kOvrOne;
     cur_ = next_ = pend_ = false;
   }
 
   bool cmd_ready() const { return !pend_; }
+  // Diagnostics of the braking rule (no RTL counterpart): the ticks on which
+  // the current move's distance had run out, and those of them with the
+  // level above the move's end level, or above 1 for a move to rest (0 while
+  // every move's braking fits: each move's end level is one its successor can
+  // brake from within its length, as tb/gcode/profile_plan.cpp plans them).
+  uint64_t ends() const { return ends_; }
+  uint64_t ends_above() const { return ends_above_; }
   // The feed word of this clock (operations per clock * 2^FEED_W), a register.
   uint64_t feed() const { return feed_; }
   bool busy() const { return cur_ || next_ || pend_ || v_ != 0 || quiet_ <= len_; }
@@ -124,8 +166,10 @@ class FeedProfile {
   }
 
   // One rising clock edge. q, len: the configuration pins (taken at rest);
-  // a command is taken when cmd_valid and cmd_ready().
-  void clock(bool cmd_valid, const Command& cmd, bool hold, uint64_t q, unsigned len) {
+  // a command is taken when cmd_valid and cmd_ready(); ovr: the override word
+  // (sampled on the boundary clock, in force from the next boundary).
+  void clock(bool cmd_valid, const Command& cmd, bool hold, uint64_t q, unsigned len,
+             unsigned ovr = kOvrOne) {
     // The feed word and the dither run every clock on the speed in force.
     const uint64_t low_mask = (uint64_t(1) << kDropW) - 1;
     const uint64_t sum = acc_ + (v_ & low_mask);
@@ -133,7 +177,10 @@ class FeedProfile {
     const uint64_t acc_d = sum & low_mask;
     const bool rest = !busy();
     const bool take = cmd_valid && !pend_;
-    if (t_ == 0) boundary(hold);
+    if (t_ == 0) {
+      boundary(hold);
+      ovr_ = ovr & 511u;
+    }
     if (take) {
       pend_cmd_ = cmd;
       pend_ = true;
@@ -181,7 +228,8 @@ class FeedProfile {
       pend_ = false;
     }
     const bool free = hold || !cur_;  // no distance to fit: only slow down
-    const uint32_t target = free ? 0 : cur_cmd_.target.to_uint();
+    const uint32_t target =
+        free ? 0 : override_target(cur_cmd_.target.to_uint(), cur_cmd_.max.to_uint(), ovr_);
     const uint32_t end = free ? 0 : cur_cmd_.end.to_uint();
     const int dc_old = ring_dc_[idx_];
     const bool up_ok = dc_old != -1, down_ok = dc_old != 1;
@@ -205,7 +253,14 @@ class FeedProfile {
       c = c_ - 1;
     }
     const int dc = int(c) - int(c_);
-    if (cur_) r_ = r_ - r_t(cost_t(q_) * cost_t(len_) * cost_t(c));
+    if (cur_) {
+      r_ = r_ - r_t(cost_t(q_) * cost_t(len_) * cost_t(c));
+      // The move's distance ran out on this tick: its level is at most its
+      // end level (1 for a move to rest: its floor, above).
+      const uint32_t e_max = cur_cmd_.end.to_uint() > 0 ? cur_cmd_.end.to_uint() : 1;
+      if (r_ <= 0 && c > e_max) ++ends_above_;
+      if (r_ <= 0) ++ends_;
+    }
     const uint64_t v_mask = (uint64_t(2) << SPD_W) - 1;  // v and q*c: SPD_W + 1 bits, as the RTL
     const uint64_t qc = (q_ * c) & v_mask;
     v_ = (v_ + qc - ring_qc_[idx_]) & v_mask;
@@ -221,7 +276,9 @@ class FeedProfile {
   std::vector<int8_t> ring_dc_;    // dc of the last L ticks
   uint64_t q_ = 0, v_ = 0, acc_ = 0, feed_ = 0;
   uint32_t len_ = 1, c_ = 0, t_ = 0, idx_ = 0, up_age_ = 0, quiet_ = 0;
+  unsigned ovr_ = kOvrOne;  // the override word of the next boundary
   r_t r_ = 0;
+  uint64_t ends_ = 0, ends_above_ = 0;
   bool cur_ = false, next_ = false, pend_ = false;
   Command pend_cmd_, next_cmd_, cur_cmd_;
 };

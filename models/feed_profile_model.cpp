@@ -59,6 +59,15 @@ uint32_t profile_level(const ProfileRegisters& regs, double speed) {
   return static_cast<uint32_t>(std::min<double>(l, regs.max_level));
 }
 
+unsigned override_word(double percent) {
+  if (!(percent >= 0 && percent <= 200)) {
+    std::ostringstream os;
+    os << "feed override " << percent << " % is outside 0..200";
+    throw std::invalid_argument(os.str());
+  }
+  return static_cast<unsigned>(std::lround(percent * 128 / 100));
+}
+
 double optimal_move_time(double distance, const PathLimits& limits) {
   const double v = limits.velocity, a = limits.accel, j = limits.jerk;
   if (!(distance > 0)) return 0;

@@ -45,6 +45,11 @@ ProfileRegisters profile_registers(const PathLimits& limits, const ProfileBuild&
 // The level of a speed (ops/s), rounded down, capped at max_level.
 uint32_t profile_level(const ProfileRegisters& regs, double speed);
 
+// The feed override's word for `percent` (0..200): round(percent * 128 / 100),
+// the block's ovr_i (hls/feed_profile.h: factor word / 128, 1/128 = 0.78 %
+// resolution). Throws std::invalid_argument naming the value outside 0..200.
+unsigned override_word(double percent);
+
 // The shortest time (s) of a rest-to-rest move of `distance` ops within the
 // limits (the 7-phase S-curve, or fewer phases when a limit is not reached).
 double optimal_move_time(double distance, const PathLimits& limits);

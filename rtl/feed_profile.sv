@@ -8,7 +8,10 @@
 //     |d2v| <= q, the acceleration and jerk limits;
 //   - a move (ops, target level, end level) ends on the tick its remaining
 //     distance R (ops << (SPD_W - TICK_W)) runs out; the next starts there;
-//   - hold_i brings the speed to rest within the same limits; release resumes.
+//   - hold_i brings the speed to rest within the same limits; release resumes;
+//   - ovr_i, the feed override (factor ovr_i / 128, 0..200 %; above 256 acts
+//     as 256), sampled on the boundary clock for the next boundary: the cruise
+//     level in force is min(ceil(target * ovr / 128), cmd_max ? cmd_max : target).
 //
 // How the RTL gets the HLS face's numbers. Everything the boundary clock
 // (t = 0) decides depends on state fixed for the whole tick before it (the
@@ -21,7 +24,10 @@
 // clock only chooses between two registers. The arithmetic that follows a
 // boundary (the distance R less this tick's travel, the ring word q * c) is
 // done by the same MAC at the start of the next tick; R is internal, so no
-// output sees the difference. Per tick, in order (SEQ_CLOCKS clocks, checked
+// output sees the difference. The override's target (above) is a small
+// shift-add multiplier of its own (9 clocks, from the end of QC, when the
+// command of the next boundary is known), long done before GO reads it.
+// Per tick, in order (SEQ_CLOCKS clocks, checked
 // against 2^TICK_W below):
 //   R     ~R = ~rp + (q L) c_new   (R is held inverted: ~(a - b) = ~a + b)
 //   QC    q c_new, written to the ring word of the boundary just passed
@@ -55,7 +61,9 @@ module feed_profile #(
   input  logic [OPS_W-1:0]  cmd_ops_i,       // its engine operations (>= 1)
   input  logic [LVL_W-1:0]  cmd_target_i,    // its cruise level
   input  logic [LVL_W-1:0]  cmd_end_i,       // its level at its last operation
+  input  logic [LVL_W-1:0]  cmd_max_i,       // its cruise level's cap (0: its target)
   input  logic              hold_i,          // feed hold: come to rest within the limits
+  input  logic [8:0]        ovr_i,           // feed override, ovr_i / 128 (128: 100 %)
   // outputs
   output logic [FEED_W:0]   feed_o,          // operations per clock * 2^FEED_W, to feed_accum (a register)
   output logic [LVL_W-1:0]  level_o,         // the trapezoid's level c
@@ -113,6 +121,13 @@ module feed_profile #(
   logic [RW-1:0]     nrp_q, nrp_d;             // ~R after the next boundary's promotion
   logic              cur_q, cur_d, next_q, next_d, pend_q, pend_d;
   logic [LVL_W-1:0]  cur_tgt_q, cur_tgt_d, cur_end_q, cur_end_d;
+  logic [LVL_W-1:0]  cur_top_q, cur_top_d, next_top_q, next_top_d, pend_top_q, pend_top_d;
+  // the override: its word for the next boundary, and the multiplier
+  logic [8:0]        ovr_q, ovr_d;
+  logic              mstart_q, mstart_d;       // load the multiplier
+  logic [3:0]        mcnt_q, mcnt_d;           // its bits left
+  logic [LVL_W+8:0]  mp_q, mp_d;               // {partial product, multiplier bits left}
+  logic [LVL_W+1:0]  scaled_q, scaled_d;       // ceil(target * ovr / 128)
   logic [OPS_W-1:0]  next_ops_q, next_ops_d, pend_ops_q, pend_ops_d;
   logic [LVL_W-1:0]  next_tgt_q, next_tgt_d, next_end_q, next_end_d;
   logic [LVL_W-1:0]  pend_tgt_q, pend_tgt_d, pend_end_q, pend_end_d;
@@ -214,7 +229,10 @@ module feed_profile #(
   logic [LVL_W-1:0] tgt_e, floor_lvl, tgt_e_d, floor_d, tgt_e_q, floor_q;
   assign free0     = !curp_q;
   assign tgt_p     = promote_q ? next_tgt_q : cur_tgt_q;
-  assign tgt_e_d   = free0 ? '0 : tgt_p;
+  logic [LVL_W-1:0] top_p, tgt_o;
+  assign top_p     = promote_q ? next_top_q : cur_top_q;
+  assign tgt_o     = ({2'b0, top_p} < scaled_q) ? top_p : scaled_q[LVL_W-1:0];
+  assign tgt_e_d   = free0 ? '0 : tgt_o;
   // the end level if not free, else 0; at least 1 when not free
   assign floor_d   = free0 ? '0 : ((end_p != '0) ? end_p : LVL_W'(1));
   assign tgt_e     = tgt_e_q;
@@ -405,6 +423,26 @@ module feed_profile #(
     end
   end
 
+  // ---- the override's target: tgt_p * ovr_q, LSB first, then the ceiling ----
+  // (tgt_p and ovr_q are fixed from the clock after QC's capture to the next
+  // boundary; the product is ready 10 clocks later, tgt_e_q 2 after that.)
+  logic [LVL_W:0] msum;
+  assign mstart_d = cap && (ph_q == OpQc);
+  assign msum     = {1'b0, mp_q[LVL_W+8:9]} + ((mp_q[0]) ? {1'b0, tgt_p} : '0);
+  always_comb begin
+    mcnt_d = mcnt_q;
+    mp_d   = mp_q;
+    if (mstart_q) begin
+      mcnt_d = 4'd9;
+      mp_d   = {LVL_W'(0), ovr_q};
+    end else if (mcnt_q != '0) begin
+      mcnt_d = mcnt_q - 4'd1;
+      mp_d   = {msum, mp_q[8:1]};
+    end
+  end
+  assign scaled_d = (LVL_W + 2)'(mp_q[LVL_W+8:7]) + (LVL_W + 2)'(mp_q[6:0] != '0);
+  assign ovr_d    = !boundary ? ovr_q : ((ovr_i > 9'd256) ? 9'd256 : ovr_i);
+
   // ---- the boundary: the level, the speed, the commands, the ring position ----
   logic go_up, go_down;
   assign go_up   = hold_i ? gu_q[1] : gu_q[0];
@@ -433,6 +471,9 @@ module feed_profile #(
     pend_d     = pend_q;
     cur_tgt_d  = cur_tgt_q;
     cur_end_d  = cur_end_q;
+    cur_top_d  = cur_top_q;
+    next_top_d = next_top_q;
+    pend_top_d = pend_top_q;
     next_ops_d = next_ops_q;
     next_tgt_d = next_tgt_q;
     next_end_d = next_end_q;
@@ -453,6 +494,7 @@ module feed_profile #(
       if (promote_q) begin
         cur_tgt_d = next_tgt_q;
         cur_end_d = next_end_q;
+        cur_top_d = next_top_q;
       end
       next_d = next_q && !promote_q;
       if (!next_d && pend_q) begin
@@ -460,6 +502,7 @@ module feed_profile #(
         next_ops_d = pend_ops_q;
         next_tgt_d = pend_tgt_q;
         next_end_d = pend_end_q;
+        next_top_d = pend_top_q;
         pend_d     = 1'b0;
       end
       c_d    = go_up ? c_q + LVL_W'(1) : (go_down ? c_q - LVL_W'(1) : c_q);
@@ -480,6 +523,7 @@ module feed_profile #(
       pend_ops_d = cmd_ops_i;
       pend_tgt_d = cmd_target_i;
       pend_end_d = cmd_end_i;
+      pend_top_d = (cmd_max_i != '0) ? cmd_max_i : cmd_target_i;
     end
     if (rest) begin
       q_d   = q_i;
@@ -502,6 +546,14 @@ module feed_profile #(
       lp1_q   <= '0;
       w1x2_q  <= '0;
       lw1x2_q <= '0;
+      ovr_q    <= 9'd128;
+      mstart_q <= 1'b0;
+      mcnt_q   <= '0;
+      mp_q     <= '0;
+      scaled_q <= '0;
+      cur_top_q  <= '0;
+      next_top_q <= '0;
+      pend_top_q <= '0;
     end else begin
       cpe_q   <= cpe_d;
       end_p_q <= end_p_d;
@@ -514,6 +566,14 @@ module feed_profile #(
       lp1_q   <= lp1_d;
       w1x2_q  <= w1x2_d;
       lw1x2_q <= lw1x2_d;
+      ovr_q    <= ovr_d;
+      mstart_q <= mstart_d;
+      mcnt_q   <= mcnt_d;
+      mp_q     <= mp_d;
+      scaled_q <= scaled_d;
+      cur_top_q  <= cur_top_d;
+      next_top_q <= next_top_d;
+      pend_top_q <= pend_top_d;
     end
   end
 

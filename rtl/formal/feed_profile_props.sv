@@ -1,6 +1,6 @@
 // Formal environment of feed_profile (scripts/formal.sh --blocks
 // feed_profile): the block with narrow parameters and every input free on
-// every clock (the configuration pins, the moves, hold_i), reset in the first
+// every clock (the configuration pins, the moves, hold_i, ovr_i), reset in the first
 // cycle only. BMC from reset and k-induction (the properties hold at every
 // depth):
 //   a_reset   the clock after reset: speed 0, level 0, not busy, ready;
@@ -15,7 +15,9 @@
 //             slot, and busy_o is high while a move is pending, next or
 //             current, or the speed is not 0;
 //   a_take    a move taken (valid and ready) is in the pending slot on the
-//             next clock, with its fields;
+//             next clock, with its fields (its cap: cmd_max_i, or the target if 0);
+//   a_ovr     the override word in force is at most 256 (200 %) and changes
+//             only on the clock after a tick boundary, to ovr_i saturated;
 //   a_pend    a pending move stays, unchanged, until a boundary moves it to
 //             the next slot, unchanged: it is never overwritten or dropped;
 //   a_next    a next move stays, unchanged, until a boundary promotes it to
@@ -33,7 +35,7 @@
 // link: f_pend_ops=dut.pend_ops_q f_pend_tgt=dut.pend_tgt_q f_pend_end=dut.pend_end_q
 // link: f_next_ops=dut.next_ops_q f_next_tgt=dut.next_tgt_q f_next_end=dut.next_end_q
 // link: f_cur_tgt=dut.cur_tgt_q f_cur_end=dut.cur_end_q f_gu1=dut.gu_q[1]
-// link: f_curp=dut.curp_q
+// link: f_curp=dut.curp_q f_pend_top=dut.pend_top_q f_ovr=dut.ovr_q
 // SPD_W = 8, TICK_W = 7 (the sequencer needs 77 of its 128 clocks at these
 // widths), levels 0..3, moves of up to 3 operations, L up to 2.
 module feed_profile_props #(
@@ -52,7 +54,9 @@ module feed_profile_props #(
   input logic [OPS_W-1:0]  cmd_ops_i,
   input logic [LVL_W-1:0]  cmd_target_i,
   input logic [LVL_W-1:0]  cmd_end_i,
-  input logic              hold_i
+  input logic [LVL_W-1:0]  cmd_max_i,
+  input logic              hold_i,
+  input logic [8:0]        ovr_i
 );
   localparam int DROP = SPD_W - FEED_W;
 
@@ -78,7 +82,9 @@ module feed_profile_props #(
     .cmd_ops_i,
     .cmd_target_i,
     .cmd_end_i,
+    .cmd_max_i,
     .hold_i,
+    .ovr_i,
     .feed_o     (feed),
     .level_o    (level),
     .speed_o    (speed),
@@ -89,12 +95,16 @@ module feed_profile_props #(
   logic             f_bnd, f_pend, f_next, f_cur, f_promote, f_gu1, f_curp;
   logic [OPS_W-1:0] f_pend_ops, f_next_ops;
   logic [LVL_W-1:0] f_pend_tgt, f_pend_end, f_next_tgt, f_next_end, f_cur_tgt, f_cur_end;
+  logic [LVL_W-1:0] f_pend_top;
+  logic [8:0]       f_ovr;
 
   // Their values and the inputs' on the clock before.
   logic             p_bnd, p_hold, p_take, p_pend, p_next, p_promote;
   logic [OPS_W-1:0] p_ops, p_pend_ops, p_next_ops;
   logic [LVL_W-1:0] p_tgt, p_end, p_pend_tgt, p_pend_end, p_next_tgt, p_next_end, p_level;
   logic [SPD_W:0]   p_speed;
+  logic [LVL_W-1:0] p_max;
+  logic [8:0]       p_ovr, p_ovr_i;
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       p_bnd      <= 1'b0;
@@ -114,6 +124,9 @@ module feed_profile_props #(
       p_next_end <= '0;
       p_level    <= '0;
       p_speed    <= '0;
+      p_max      <= '0;
+      p_ovr      <= 9'd128;
+      p_ovr_i    <= '0;
     end else begin
       p_bnd      <= f_bnd;
       p_hold     <= hold_i;
@@ -132,6 +145,9 @@ module feed_profile_props #(
       p_next_end <= f_next_end;
       p_level    <= level;
       p_speed    <= speed;
+      p_max      <= cmd_max_i;
+      p_ovr      <= f_ovr;
+      p_ovr_i    <= ovr_i;
     end
   end
 
@@ -158,7 +174,10 @@ module feed_profile_props #(
       a_speed: assert(speed == p_speed || p_bnd);
       a_feed: assert(feed == p_vhi || feed == p_vhi + (FEED_W + 1)'(1));
       a_take: assert(!p_take ||
-                     (f_pend && f_pend_ops == p_ops && f_pend_tgt == p_tgt && f_pend_end == p_end));
+                     (f_pend && f_pend_ops == p_ops && f_pend_tgt == p_tgt && f_pend_end == p_end &&
+                      f_pend_top == ((p_max != '0) ? p_max : p_tgt)));
+      a_ovr: assert(f_ovr <= 9'd256 &&
+                    (p_bnd ? f_ovr == ((p_ovr_i > 9'd256) ? 9'd256 : p_ovr_i) : f_ovr == p_ovr));
       a_pend: assert(!p_pend ||
                      (f_pend && f_pend_ops == p_pend_ops && f_pend_tgt == p_pend_tgt &&
                       f_pend_end == p_pend_end) ||

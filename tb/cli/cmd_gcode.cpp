@@ -74,6 +74,10 @@ int run_gcode(int argc, char** argv, int first) {
               "with a profile: feed hold from AT seconds of the run for FOR seconds, a "
               "controlled stop along the path within the limits, then the planned profile "
               "resumes; the report gives the distance and time to rest")
+      .option("feed-override", "AT:PCT[,AT:PCT...]",
+              "with a profile: the feed override, PCT (0..200 %, resolution 1/128) from AT "
+              "seconds of the run on; every change jerk-limited, above 100 % capped at the "
+              "machine's limits (hls/feed_profile.h)")
       .option("moves-csv", "FILE", "one row per motion move: programmed end, lattice end reached")
       .option("step-times", "FILE",
               "every step pulse on the wire as CSV: clock,axis,dir (the clock of its rising "
@@ -121,6 +125,15 @@ int run_gcode(int argc, char** argv, int first) {
       throw UsageError("--feed-hold: '" + v + "' needs AT >= 0 and FOR > 0 seconds");
     if (setup.machine.profile == gcode::ProfileKind::kOff)
       throw UsageError("--feed-hold: the hold is the feed profile's; the profile is off");
+  }
+  if (args.given("feed-override")) {
+    try {
+      setup.feed_override = tb::parse_feed_override(args.str("feed-override"));
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--feed-override: ") + e.what());
+    }
+    if (setup.machine.profile == gcode::ProfileKind::kOff)
+      throw UsageError("--feed-override: the override is the feed profile's; the profile is off");
   }
   if (!setup.bus.empty() && setup.machine.profile != gcode::ProfileKind::kOff)
     throw UsageError(std::string("--bus ") + setup.bus + ": motion_soc has no feed profile yet; " +

@@ -63,6 +63,9 @@ int run_profile(int argc, char** argv, int first) {
   args.option("end-speed", "OPS/S", "with --ops: the speed at its last operation", "0");
   args.option("moves", "FILE", "CSV of moves: ops,target_speed,end_speed");
   args.option("csv", "FILE", "write the speed per tick: tick,seconds,speed");
+  args.option("feed-override", "AT:PCT[,AT:PCT...]",
+              "the feed override (0..200 %, resolution 1/128) from AT seconds on; a move's "
+              "speed above 100 % is capped at the velocity limit (hls/feed_profile.h)");
   if (parse_or_help(args, argc, argv, first)) return kExitOk;
   check_outputs_writable(args, {"csv"});
   for (const char* n : {"max-velocity", "max-accel", "max-jerk"})
@@ -81,9 +84,18 @@ int run_profile(int argc, char** argv, int first) {
     m.end_speed = args.real("end-speed", 0, limits.velocity);
     moves.push_back(m);
   }
+  std::vector<tb::OverridePoint> ovr;
+  if (args.given("feed-override")) {
+    try {
+      ovr = tb::parse_feed_override(args.str("feed-override"));
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(std::string("--feed-override: ") + e.what());
+    }
+  }
   tb::ProfileRunResult r;
   try {
-    r = tb::run_feed_profile(limits, clock_hz, moves, args.given("csv"));
+    r = tb::run_feed_profile(limits, clock_hz, moves, args.given("csv"),
+                             tb::override_steps(ovr, clock_hz));
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--max-velocity/--max-accel/--max-jerk/--clock-hz: ") + e.what());
   }
@@ -140,6 +152,11 @@ int run_profile(int argc, char** argv, int first) {
   report["move_end_clocks"] = std::move(ends);
   report["move_end_speeds"] = r.move_end_speed;
   report["rest_clock"] = r.rest_clock;
+  Json jovr = Json::array();
+  for (const tb::OverridePoint& o : ovr)
+    jovr.push_back(
+        {{"at_s", o.at_s}, {"percent", o.percent}, {"word", models::override_word(o.percent)}});
+  report["feed_override"] = std::move(jovr);
   report["ops"] = r.ops;
   report["peak"] = {{"speed", r.peak_speed}, {"accel", r.peak_accel}, {"jerk", r.peak_jerk}};
   report["seconds_last_op"] = last_s;

@@ -509,11 +509,14 @@ PartProgramRun run_part_program(const PartProgramSetup& setup) {
               plan_finished = true;
             }
           }
-          w = {pc.ops, pc.target, pc.end};
+          w = {pc.ops, pc.target, pc.end, pc.max};
           return true;
         });
   }
 
+  if (profile_feed && !setup.feed_override.empty())
+    profile_feed->override_schedule(
+        tb::override_steps(setup.feed_override, static_cast<double>(setup.machine.clock_hz)));
   if (profile_feed && setup.hold_at_s >= 0) {
     const double hz = static_cast<double>(setup.machine.clock_hz);
     profile_feed->hold_between(
@@ -581,7 +584,8 @@ PartProgramRun run_part_program(const PartProgramSetup& setup) {
                  setup.profile_window,
                  profile_feed->moves_taken(),
                  false,
-                 {}};
+                 {},
+                 setup.feed_override};
     if (setup.hold_at_s >= 0) {
       const tb::ProfileFeed::HoldStop& h = profile_feed->hold_stop();
       const double hz = static_cast<double>(setup.machine.clock_hz);
@@ -668,6 +672,13 @@ std::string summary_table(const PartProgramSetup& setup, const PartProgramRun& r
                                            : std::to_string(run.profile_failures.size()) +
                                                  " failures: " + run.profile_failures.front()) +
              ")"});
+    if (!p.feed_override.empty()) {
+      std::string steps;
+      for (const tb::OverridePoint& o : p.feed_override)
+        steps += (steps.empty() ? "" : ", ") + fmt("%.6g", o.percent) + " % from " +
+                 fmt("%.6g", o.at_s) + " s";
+      s.add_row({"feed override", steps});
+    }
     if (p.held) {
       const ProfileReport::Hold& h = p.hold;
       s.add_row({"feed hold at " + fmt("%.6g", h.at_s) + " s for " + fmt("%.6g", h.for_s) + " s",
@@ -811,6 +822,13 @@ Json report_json(const PartProgramSetup& setup, const PartProgramRun& run) {
     prof["moves"] = pr.moves;
     prof["time_s"] = static_cast<double>(r.cycles) / static_cast<double>(setup.machine.clock_hz);
     if (pr.held) prof["hold"] = Json(nlohmann::json(pr.hold));  // its keys in name order
+    if (!pr.feed_override.empty()) {
+      Json steps = Json::array();
+      for (const tb::OverridePoint& o : pr.feed_override)
+        steps.push_back(
+            {{"at_s", o.at_s}, {"percent", o.percent}, {"word", models::override_word(o.percent)}});
+      prof["feed_override"] = std::move(steps);
+    }
     prof["failures"] = run.profile_failures;
   }
   report["profile"] = prof;

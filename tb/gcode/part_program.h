@@ -29,6 +29,7 @@
 #include "tb/gcode/motion_compiler.h"
 #include "tb/gcode/program_file.h"
 #include "tb/lockstep/bench_options.h"
+#include "tb/lockstep/profile_feed.h"
 
 namespace hwinterp::gcode {
 
@@ -49,6 +50,9 @@ struct PartProgramSetup {
   // Feed hold (machine.profile on): the profile's hold input high from
   // hold_at_s for hold_for_s seconds of the run; hold_at_s < 0: none.
   double hold_at_s = -1, hold_for_s = 0;
+  // The feed override (--feed-override AT:PCT,...), the profile's ovr_i:
+  // percent from AT seconds of the run on; empty: 100 % throughout.
+  std::vector<tb::OverridePoint> feed_override;
   // The bus writes that stream the program's commands into motion_soc
   // (tb/gcode/soc_writes.h); empty: none.
   std::string soc_writes_path;
@@ -78,6 +82,7 @@ struct ProfileReport {
   };
   bool held = false;  // a hold was asked for: `hold` is set
   Hold hold;
+  std::vector<tb::OverridePoint> feed_override;  // --feed-override's steps (empty: 100 %)
 };
 // The JSON report's `profile.hold`: the fields once.
 NLOHMANN_DEFINE_TYPE_NON_INTRUSIVE(ProfileReport::Hold, at_s, for_s, stopped, speed_ops_per_s,

@@ -14,6 +14,9 @@ constexpr double kAccelShare = 0.8;  // of the smallest axis limit; the rest for
 
 using Steps = std::array<double, models::kMotionMaxAxes>;
 
+// The cruise level at 100 % (the block's min(target, max)).
+uint32_t cruise(const ProfileCommand& p) { return std::min(p.target, p.max); }
+
 // Steps per engine operation along a plane tangent t (a PPC operation steps x
 // or y: |s_x| + |s_y| = 1).
 void plane_rate(Steps& s, const std::array<int, 2>& ax, double tx, double ty) {
@@ -94,8 +97,10 @@ void ProfilePlanner::push(const models::MotionCommand& c, bool stop_before) {
   e.p.ops = models::motion_operations(c);
   const double n = static_cast<double>(e.p.ops);
   const double f = build_.clock_hz;
-  double v = std::min(f, static_cast<double>(c.feed) * f / std::ldexp(1.0, feed_w_));
-  if (c.feed == 0) v = f;
+  // v: the cap by the machine (without the programmed feed, for the override)
+  double v = f;
+  const double programmed =
+      c.feed == 0 ? f : std::min(f, static_cast<double>(c.feed) * f / std::ldexp(1.0, feed_w_));
   // The step/dir stage must never stall the engine: the profile's distance
   // runs on whether or not the engine keeps up. An axis steps at most once
   // per step_len + step_space clocks, and a feed tick can come a clock early.
@@ -144,8 +149,10 @@ void ProfilePlanner::push(const models::MotionCommand& c, bool stop_before) {
       }
     }
   }
-  e.p.target_speed = v;
-  e.p.target = std::max<uint32_t>(1, models::profile_level(regs_, v));
+  e.p.target_speed = std::min(v, programmed);
+  // min(target, max) = max(1, level(min(v, programmed))): the cruise level at 100 %
+  e.p.target = std::max<uint32_t>(1, models::profile_level(regs_, programmed));
+  e.p.max = std::max<uint32_t>(1, models::profile_level(regs_, v));
   // The junction from the command before into this one.
   if (!q_.empty()) {
     Entry& prev = q_.back();
@@ -161,8 +168,8 @@ void ProfilePlanner::push(const models::MotionCommand& c, bool stop_before) {
     prev.max_end = stop_before
                        ? 0
                        : std::min<double>({vj == kInf ? 1e300 : models::profile_level(regs_, vj),
-                                           static_cast<double>(prev.p.target),
-                                           static_cast<double>(e.p.target)});
+                                           static_cast<double>(cruise(prev.p)),
+                                           static_cast<double>(cruise(e.p))});
   }
   q_.push_back(e);
   plan_back();

@@ -25,6 +25,13 @@
 // A program stop (M0, M1) between two moves is an exact stop too, and the
 // program ends at rest (M2, M30).
 //
+// The feed override (hls/feed_profile.h) scales the programmed speed (the
+// level `target`), and the block caps the result at `max`: the caps above
+// without the programmed feed (the axes' velocity limits, the step/dir stage,
+// the arc terms, one operation a clock), so no override passes a limit, and
+// at 100 % the cruise level is min(target, max), as before the override. The
+// end levels are planned from that level and are not raised.
+//
 // Look-ahead. A command is planned once `window` commands after it are known
 // (or the program ended: the last ends at rest): backward over the window,
 // each end level is lowered until the next command can brake from it to its
@@ -45,8 +52,9 @@ namespace hwinterp::gcode {
 
 struct ProfileCommand {
   uint64_t ops = 0;         // engine operations of the command
-  uint32_t target = 0;      // cruise level
+  uint32_t target = 0;      // cruise level: the programmed speed's
   uint32_t end = 0;         // level at its last operation
+  uint32_t max = 0;         // the cap of the cruise level (the machine's)
   double target_speed = 0;  // operations/s before rounding to a level (for reports)
 };
 

@@ -28,7 +28,8 @@ models::ProfileBuild feed_profile_build(double clock_hz) {
 }
 
 ProfileRunResult run_feed_profile(const models::PathLimits& limits, double clock_hz,
-                                  const std::vector<ProfileMove>& moves, bool keep_trace) {
+                                  const std::vector<ProfileMove>& moves, bool keep_trace,
+                                  const std::vector<OverrideStep>& override) {
   ProfileRunResult res;
   res.regs = models::profile_registers(limits, feed_profile_build(clock_hz));
   res.tick_seconds = kTickClocks / clock_hz;
@@ -47,6 +48,7 @@ ProfileRunResult run_feed_profile(const models::PathLimits& limits, double clock
     c.target =
         m.target_speed > 0 ? models::profile_level(res.regs, m.target_speed) : res.regs.max_level;
     c.end = std::min<uint32_t>(c.target.to_uint(), models::profile_level(res.regs, m.end_speed));
+    c.max = m.max_speed > 0 ? models::profile_level(res.regs, m.max_speed) : res.regs.max_level;
     cmds.push_back(c);
     need += m.ops;
     ends.push_back(need);
@@ -58,6 +60,8 @@ ProfileRunResult run_feed_profile(const models::PathLimits& limits, double clock
   const double to_speed = std::ldexp(clock_hz, -48);  // v -> ops/s
   double v1 = 0, v2 = 0;
   int seen = 0;
+  size_t ovr_next = 0;
+  unsigned ovr = Profile::kOvrOne;
   for (uint64_t clk = 0; clk < kMaxClocks; ++clk) {
     if (clk % kTickClocks == 0) {
       const double v = static_cast<double>(p.state().v) * to_speed;
@@ -85,7 +89,9 @@ ProfileRunResult run_feed_profile(const models::PathLimits& limits, double clock
     if (res.ops == need && res.rest_clock == 0 && p.state().v == 0) res.rest_clock = clk;
     const bool valid = sent < cmds.size();
     const bool take = valid && p.cmd_ready();
-    p.clock(valid, valid ? cmds[sent] : Profile::Command{}, false, res.regs.q, res.regs.len);
+    while (ovr_next < override.size() && override[ovr_next].at <= clk)
+      ovr = override[ovr_next++].word;
+    p.clock(valid, valid ? cmds[sent] : Profile::Command{}, false, res.regs.q, res.regs.len, ovr);
     if (take) ++sent;
     if (res.rest_clock != 0 && !p.busy()) break;
   }

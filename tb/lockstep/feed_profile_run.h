@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "models/feed_profile_model.h"
+#include "tb/lockstep/profile_feed.h"
 
 namespace hwinterp::tb {
 
@@ -18,6 +19,7 @@ struct ProfileMove {
   uint64_t ops = 0;         // engine operations (>= 1)
   double target_speed = 0;  // ops/s (rounded down to a level; 0: the limit)
   double end_speed = 0;     // ops/s when its last operation is taken
+  double max_speed = 0;     // ops/s its cruise speed is capped at under the override (0: the limit)
 };
 
 struct ProfileRunResult {
@@ -34,7 +36,10 @@ struct ProfileRunResult {
 };
 
 // Throws std::invalid_argument (naming the value) for bad limits or moves.
+// `override`: the feed override's steps (ovr_i, hls/feed_profile.h) in clock
+// order; none: 100 %.
 ProfileRunResult run_feed_profile(const models::PathLimits& limits, double clock_hz,
-                                  const std::vector<ProfileMove>& moves, bool keep_trace);
+                                  const std::vector<ProfileMove>& moves, bool keep_trace,
+                                  const std::vector<OverrideStep>& override = {});
 
 }  // namespace hwinterp::tb

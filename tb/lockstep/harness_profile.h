@@ -1,7 +1,7 @@
 // The feed profile's build as the harness runs it, described once: the
 // cycle-accurate face (`hwinterp profile`, tb/lockstep/profile_feed.h), the
 // model's registers (feed_profile_build) and, in rtl/CMakeLists.txt, the
-// Verilated Vfeed_profile_harness_cc take these widths.
+// Verilated Vfeed_profile_f<W>_cc take these widths.
 #pragma once
 
 #include "hls/feed_profile.h"

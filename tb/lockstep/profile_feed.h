@@ -11,6 +11,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace hwinterp::tb {
 
@@ -21,7 +22,27 @@ inline constexpr int kProfileFeedW = 24;
 struct ProfileWords {
   uint64_t ops = 0;
   uint32_t target = 0, end = 0;
+  uint32_t max = 0;  // the cap of the cruise level (cmd_max_i; 0: the target)
 };
+
+// A feed override change: from clock `at` on, the block's ovr_i is `word`
+// (factor word / 128: 128 is 100 %, 0..256 is 0..200 %).
+struct OverrideStep {
+  uint64_t at = 0;
+  unsigned word = 128;
+};
+
+// A feed override schedule as given on the command line: AT:PCT[,AT:PCT...]
+// (seconds from the run's start, percent 0..200), AT in non-decreasing order.
+struct OverridePoint {
+  double at_s = 0;
+  double percent = 100;
+};
+// Throws std::invalid_argument naming the bad value (the last step must not
+// be 0 %: the moves would never finish).
+std::vector<OverridePoint> parse_feed_override(const std::string& text);
+// The schedule in clocks and override words (models::override_word).
+std::vector<OverrideStep> override_steps(const std::vector<OverridePoint>& points, double clock_hz);
 
 // Exact stops. A move whose end level is 0 is an exact stop: the next move
 // is offered only once the block is at rest (busy_o low), and so is the
@@ -76,6 +97,10 @@ class ProfileFeed {
   };
   const HoldStop& hold_stop() const { return stop_; }
   uint64_t hold_clocks() const { return hold_to_ - hold_from_; }
+  // The feed override (the block's ovr_i), steps in clock order; 100 % before
+  // the first. Throws std::invalid_argument when the clocks are not in order.
+  void override_schedule(std::vector<OverrideStep> steps);
+  unsigned override_word() const { return ovr_; }  // the word driven on the last clock
   // Every move was taken and the profile has been at rest for 4 ticks: an
   // engine still busy behind it will never finish (it fell behind, stalled
   // by its step/dir stage, and the profile's distance ran out first).
@@ -97,6 +122,9 @@ class ProfileFeed {
   bool stop_open_ = false;  // an exact stop taken: the next move waits for rest
   uint64_t taken_ = 0, clocks_ = 0, rest_clocks_ = 0;
   uint64_t hold_from_ = 0, hold_to_ = 0;
+  std::vector<OverrideStep> ovr_steps_;
+  size_t ovr_next_ = 0;
+  unsigned ovr_ = 128;
   HoldStop stop_;
   std::string failure_;
 };

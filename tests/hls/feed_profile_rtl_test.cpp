@@ -69,7 +69,9 @@ TEST(FeedProfileRtl, MatchesTheHlsFaceOnEveryClock) {
       rtl.cmd_ops_i = cmd.ops.to_uint();
       rtl.cmd_target_i = cmd.target.to_uint();
       rtl.cmd_end_i = cmd.end.to_uint();
+      rtl.cmd_max_i = 0;
       rtl.hold_i = hold;
+      rtl.ovr_i = Profile::kOvrOne;
       // Outputs before the edge: both faces' registers.
       ASSERT_EQ(rtl.feed_o, hls.feed()) << "case " << k << " clock " << clk;
       ASSERT_EQ(rtl.level_o, hls.state().c) << "case " << k << " clock " << clk;
@@ -97,6 +99,99 @@ TEST(FeedProfileRtl, MatchesTheHlsFaceOnEveryClock) {
   }
   std::printf("%llu clocks, %llu moves compared\n", static_cast<unsigned long long>(clocks),
               static_cast<unsigned long long>(moves_done));
+}
+
+// The same with the feed override: ovr_i changes at random clocks (every
+// tick for a while, then every few thousand clocks, among them 0 %, 200 % and
+// words above 256) and each move has a random cap word (cmd_max_i).
+TEST(FeedProfileRtl, MatchesTheHlsFaceOnEveryClockUnderTheOverride) {
+  struct RestoreThreadContext {
+    ~RestoreThreadContext() { Verilated::threadContextp(Verilated::defaultContextp()); }
+  } restore;
+  std::mt19937_64 rng(25);
+  uint64_t clocks = 0, moves_done = 0, changes = 0;
+  for (int k = 0; k < 8; ++k) {
+    VerilatedContext context;
+    context.randSeed(k + 101);
+    Vfeed_profile_cc rtl(&context);
+    Profile hls;
+    hls.reset();
+    models::ProfileBuild b;
+    b.tick_w = 8;
+    b.clock_hz = 1e6;
+    std::uniform_real_distribution<double> vel(5e3, 5e4), acc(1e5, 1e6), jerk(1e7, 1e8);
+    const models::ProfileRegisters regs =
+        models::profile_registers({vel(rng), acc(rng), jerk(rng)}, b);
+    rtl.rst_ni = 0;
+    for (int e : {0, 1, 0}) {
+      rtl.clk_i = e;
+      rtl.eval();
+    }
+    rtl.rst_ni = 1;
+    rtl.eval();
+    std::uniform_int_distribution<uint32_t> ops(1, 3000), pct(0, 99), word(0, 511);
+    Profile::Command cmd;
+    bool valid = false, hold = false;
+    unsigned ovr = Profile::kOvrOne;
+    int sent = 0;
+    const int moves = 6;
+    for (uint64_t clk = 0; clk < 20'000'000; ++clk) {
+      if (!valid && sent < moves && pct(rng) < 5) {
+        cmd.ops = ops(rng);
+        cmd.target = std::uniform_int_distribution<uint32_t>(1, regs.max_level)(rng);
+        cmd.max =
+            pct(rng) < 50 ? 0 : std::uniform_int_distribution<uint32_t>(0, regs.max_level)(rng);
+        cmd.end = sent == moves - 1
+                      ? 0
+                      : std::uniform_int_distribution<uint32_t>(0, cmd.target.to_uint())(rng);
+        valid = true;
+      }
+      if (clk % 4096 == 0) hold = pct(rng) < 5;
+      // Every tick (256 clocks) for the first 200 ticks, then now and then;
+      // a zero override is lifted after a while so that the stream finishes.
+      const bool every_tick = clk < 51200 && clk % 256 == 0;
+      if (every_tick || (clk % 997 == 0 && pct(rng) < 30)) {
+        ovr = pct(rng) < 15 ? 0 : (pct(rng) < 15 ? 256 : word(rng));
+        ++changes;
+      }
+      if (clk > 2'000'000 && ovr < 64) ovr = 64;
+      rtl.q_i = regs.q;
+      rtl.len_i = regs.len;
+      rtl.cmd_valid_i = valid;
+      rtl.cmd_ops_i = cmd.ops.to_uint();
+      rtl.cmd_target_i = cmd.target.to_uint();
+      rtl.cmd_end_i = cmd.end.to_uint();
+      rtl.cmd_max_i = cmd.max.to_uint();
+      rtl.hold_i = hold;
+      rtl.ovr_i = ovr;
+      ASSERT_EQ(rtl.feed_o, hls.feed()) << "case " << k << " clock " << clk;
+      ASSERT_EQ(rtl.level_o, hls.state().c) << "case " << k << " clock " << clk;
+      ASSERT_EQ(rtl.speed_o, hls.state().v) << "case " << k << " clock " << clk;
+      ASSERT_EQ(rtl.busy_o, hls.busy()) << "case " << k << " clock " << clk;
+      ASSERT_EQ(rtl.cmd_ready_o, hls.cmd_ready()) << "case " << k << " clock " << clk;
+      const bool take = valid && hls.cmd_ready();
+      rtl.clk_i = 1;
+      rtl.eval();
+      hls.clock(valid, cmd, hold, regs.q, regs.len, ovr);
+      rtl.clk_i = 0;
+      rtl.eval();
+      if (take) {
+        valid = false;
+        ++sent;
+      }
+      ++clocks;
+      if (sent == moves && !valid && !hls.busy()) {
+        moves_done += moves;
+        break;
+      }
+    }
+    EXPECT_EQ(sent, moves) << "case " << k;
+    EXPECT_FALSE(hls.busy()) << "case " << k;
+    rtl.final();
+  }
+  std::printf("%llu clocks, %llu moves, %llu override changes compared\n",
+              static_cast<unsigned long long>(clocks), static_cast<unsigned long long>(moves_done),
+              static_cast<unsigned long long>(changes));
 }
 
 }  // namespace

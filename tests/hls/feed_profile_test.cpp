@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <stdexcept>
 #include <vector>
 
 #include "models/feed_profile_model.h"
@@ -175,6 +176,235 @@ TEST(FeedProfile, FeedHoldStopsWithinTheLimitsAndResumeFinishesTheMove) {
     EXPECT_GT(r.clocks, 0u) << "case " << k << ": the move did not finish after the resume";
     EXPECT_GE(r.total_ops, 50000u) << "case " << k;
   }
+}
+
+// ---- the feed override (ovr, hls/feed_profile.h) ----
+
+// Moves whose end levels the next move can brake from within its length, by
+// the block's own cost (as tb/gcode/profile_plan.cpp plans them): for these
+// the braking rule ends every move at or below its end level.
+void plan_ends(std::vector<Profile::Command>& moves, const models::ProfileRegisters& regs) {
+  const double len = regs.len;
+  for (size_t m = moves.size() - 1; m-- > 0;) {
+    const double n = moves[m + 1].end.to_uint();
+    const double budget =
+        std::ldexp(moves[m + 1].ops.to_double(), 48 - 8) / static_cast<double>(regs.q * regs.len);
+    const auto cost = [&](double e) {
+      return e * (1 + len) + (e > n ? (e + n - 1) * (e - n) / 2 : 0) + n * (len - 1) / 2;
+    };
+    uint32_t e = moves[m].end.to_uint();
+    while (e > 0 && cost(e) > budget) --e;
+    moves[m].end = e;
+  }
+}
+
+struct OvrTrace {
+  uint64_t ticks = 0, total_ops = 0, need = 0;
+  uint64_t ends = 0, ends_above = 0;  // the block's move ends, and those above the end level
+  uint32_t level_max = 0;
+  int64_t v_max = 0;
+  uint64_t over_accel = 0, over_jerk = 0;  // ticks with |dv| > q L, |d2v| > q
+};
+
+// `ovr(tick, ops, next_end, v)` gives the override word for each tick (held
+// for its clocks): the tick, the ops done, the ops at the end of the move in
+// progress, the speed. The engine as in run(). Counts the ticks with
+// |dv| > q L or |d2v| > q.
+template <class Ovr>
+OvrTrace run_override(const std::vector<Profile::Command>& moves, const models::ProfileRegisters& g,
+                      Ovr ovr, int k) {
+  Profile p;
+  p.reset();
+  OvrTrace r;
+  std::vector<uint64_t> ends;
+  for (const auto& m : moves) ends.push_back((r.need += m.ops.to_uint64()));
+  size_t sent = 0, done = 0;
+  uint64_t phase = 0;
+  unsigned word = Profile::kOvrOne;
+  int64_t v1 = 0, v2 = 0;
+  const int64_t a_max = static_cast<int64_t>(g.q * g.len), j_max = static_cast<int64_t>(g.q);
+  for (uint64_t clk = 0; clk < 400'000'000; ++clk) {
+    if (clk % kTick == 0) {
+      const int64_t v = static_cast<int64_t>(p.state().v);
+      if (r.ticks >= 1 && std::abs(v - v1) > a_max) ++r.over_accel;
+      if (r.ticks >= 2 && std::abs(v - 2 * v1 + v2) > j_max) ++r.over_jerk;
+      r.v_max = std::max(r.v_max, v);
+      r.level_max = std::max(r.level_max, p.state().c);
+      v2 = v1;
+      v1 = v;
+      word = ovr(r.ticks, r.total_ops, done < ends.size() ? ends[done] : r.need,
+                 static_cast<uint64_t>(v));
+      ++r.ticks;
+    }
+    phase += std::min<uint64_t>(p.feed(), 1u << 16);
+    for (; phase >= (1u << 16); phase -= 1u << 16)
+      if (r.total_ops < r.need && ++r.total_ops == ends[done]) ++done;
+    const bool valid = sent < moves.size();
+    const bool take = valid && p.cmd_ready();
+    p.clock(valid, valid ? moves[sent] : Profile::Command{}, false, g.q, g.len, word);
+    if (take) ++sent;
+    if (sent == moves.size() && !p.busy() && r.total_ops == r.need) break;
+  }
+  r.ends = p.ends();
+  r.ends_above = p.ends_above();
+  EXPECT_EQ(r.over_accel, 0u) << "case " << k << ": ticks with |dv| > q L";
+  EXPECT_EQ(r.over_jerk, 0u) << "case " << k << ": ticks with |d2v| > q";
+  return r;
+}
+
+// Seeded random override sequences (0 %, 200 %, above 200 %, a new value every
+// tick, every few ticks, or near a move's end) over random moves and limits:
+// every tick the speed changes within q L and its change within q (whatever
+// the override does), every move's distance is travelled exactly (the
+// block's move ends at or below its end level, and the ops add up), and the
+// level never passes the highest cap of the moves.
+TEST(FeedProfile, OverrideKeepsTheLimitsAndEveryMoveEndsWithinItsEndLevel) {
+  std::mt19937_64 rng(31);
+  uint64_t ends = 0, zero_ticks = 0, ticks = 0;
+  for (int k = 0; k < 24; ++k) {
+    const Limits l = random_limits(rng, 1e6);
+    const uint32_t top_level = l.regs.max_level;
+    std::vector<Profile::Command> moves;
+    uint32_t cap = 0;
+    for (int m = 0; m < 5; ++m) {
+      Profile::Command c;
+      c.ops = std::uniform_int_distribution<uint32_t>(1, 20000)(rng);
+      const uint32_t t = std::uniform_int_distribution<uint32_t>(1, top_level)(rng);
+      c.target = t;
+      // the cap: none (0: the target), above the target, or below it
+      c.max = rng() % 2 ? std::uniform_int_distribution<uint32_t>(1, top_level)(rng) : 0;
+      c.end = m == 4 ? 0 : std::uniform_int_distribution<uint32_t>(0, t)(rng);
+      cap = std::max(cap, c.max != 0 ? c.max.to_uint() : t);
+      moves.push_back(c);
+    }
+    plan_ends(moves, l.regs);
+    const int mode = k % 4;
+    std::uniform_int_distribution<unsigned> any(0, 300);
+    const unsigned picks[] = {0, 1, 64, 128, 192, 255, 256, 511};
+    unsigned held = 128;
+    const OvrTrace r = run_override(
+        moves, l.regs,
+        [&](uint64_t tick, uint64_t ops, uint64_t next_end, uint64_t) {
+          if (tick >= 6000) return 200u;   // then the stream finishes
+          if (mode == 0) return any(rng);  // a new value every tick
+          if (mode == 1 && tick % 40 == 0) held = picks[rng() % 8];
+          if (mode == 2 && next_end - ops < 300) held = any(rng);        // near a move's end
+          if (mode == 3 && tick % 200 == 0) held = held == 0 ? 256 : 0;  // stop, 200 %, stop
+          zero_ticks += held == 0;
+          return held;
+        },
+        k);
+    EXPECT_EQ(r.total_ops, r.need) << "case " << k << ": the stream did not finish";
+    EXPECT_EQ(r.ends, moves.size()) << "case " << k;
+    EXPECT_EQ(r.ends_above, 0u) << "case " << k << ": a move ended above its end level";
+    EXPECT_LE(r.level_max, cap) << "case " << k;
+    EXPECT_LE(r.v_max, static_cast<int64_t>(l.regs.q * l.regs.len) * cap) << "case " << k;
+    ends += r.ends;
+    ticks += r.ticks;
+  }
+  EXPECT_GT(zero_ticks, 1000u);  // the runs did stop at 0 %
+  std::printf("%llu move ends, %llu ticks, %llu ticks asked at 0 %%\n",
+              static_cast<unsigned long long>(ends), static_cast<unsigned long long>(ticks),
+              static_cast<unsigned long long>(zero_ticks));
+}
+
+// The check above is not idle: end levels the next move cannot brake from
+// (not planned) end moves above their end level.
+TEST(FeedProfile, UnplannedEndLevelsAreCaughtByTheEndCheck) {
+  std::mt19937_64 rng(31);
+  uint64_t above = 0;
+  for (int k = 0; k < 8; ++k) {
+    const Limits l = random_limits(rng, 1e6);
+    std::vector<Profile::Command> moves;
+    for (int m = 0; m < 5; ++m) {
+      Profile::Command c;
+      c.ops = std::uniform_int_distribution<uint32_t>(1, 3000)(rng);
+      c.target = l.regs.max_level;
+      c.end = m == 4 ? 0 : l.regs.max_level;
+      moves.push_back(c);
+    }
+    above += run_override(
+                 moves, l.regs, [](uint64_t, uint64_t, uint64_t, uint64_t) { return 128u; }, k)
+                 .ends_above;
+  }
+  EXPECT_GT(above, 0u);
+}
+
+// At 200 % the level rises to the cap and no further; at 50 % the cruise
+// level is ceil(target / 2); at 100 % a target above its cap runs the same
+// bits as the target at the cap (min(target, max): how the planner keeps
+// today's profile); ovr 0 stops the move along the path like hold_i and the
+// move finishes once the override rises.
+TEST(FeedProfile, OverrideScalesTheTargetUpToTheCap) {
+  std::mt19937_64 rng(7);
+  for (int k = 0; k < 6; ++k) {
+    const Limits l = random_limits(rng, 1e6);
+    const uint32_t t = std::max<uint32_t>(2, l.regs.max_level / 3);
+    Profile::Command c;
+    c.ops = 60000;
+    c.target = t;
+    c.end = 0;
+    c.max = t + t / 2;  // 150 %
+    const auto fixed = [](unsigned w) {
+      return [w](uint64_t, uint64_t, uint64_t, uint64_t) { return w; };
+    };
+    EXPECT_EQ(run_override({c}, l.regs, fixed(256), k).level_max, t + t / 2) << "case " << k;
+    EXPECT_EQ(run_override({c}, l.regs, fixed(64), k).level_max, (t + 1) / 2) << "case " << k;
+    c.max = 0;  // no cap: the override only slows down
+    EXPECT_EQ(run_override({c}, l.regs, fixed(511), k).level_max, t) << "case " << k;
+    // 100 %: target 2t capped at t gives the same bits as target t.
+    Profile a, b;
+    a.reset();
+    b.reset();
+    Profile::Command capped = c;
+    capped.target = 2 * t;
+    capped.max = t;
+    for (uint64_t clk = 0; clk < 30'000'000 && (clk < 10 || a.busy()); ++clk) {
+      ASSERT_TRUE(a.state() == b.state()) << "case " << k << " clock " << clk;
+      a.clock(clk == 0, c, false, l.regs.q, l.regs.len);
+      b.clock(clk == 0, capped, false, l.regs.q, l.regs.len, Profile::kOvrOne);
+    }
+    // 0 % from a third of the way: at rest with distance left (no op for the
+    // last 500 ticks of the stop), then 100 % finishes the move.
+    uint64_t stop_tick = 0, ops_a = 0, ops_b = 0, v_b = 1;
+    const OvrTrace r = run_override(
+        {c}, l.regs,
+        [&](uint64_t tick, uint64_t ops, uint64_t, uint64_t v) {
+          if (stop_tick == 0 && ops >= 20000) stop_tick = tick;
+          if (stop_tick != 0 && tick == stop_tick + 2500) ops_a = ops;
+          if (stop_tick != 0 && tick == stop_tick + 2999) ops_b = ops, v_b = v;
+          return stop_tick != 0 && tick < stop_tick + 3000 ? 0u : 128u;
+        },
+        k);
+    EXPECT_EQ(v_b, 0u) << "case " << k;
+    EXPECT_EQ(ops_a, ops_b) << "case " << k;
+    EXPECT_LT(ops_b, 60000u) << "case " << k;
+    EXPECT_EQ(r.total_ops, 60000u) << "case " << k;
+    EXPECT_EQ(r.ends_above, 0u) << "case " << k;
+  }
+}
+
+// The override's word and its cruise level: the model's percent (0..200, in
+// 1/128 steps) and the block's integer rule agree with the real-valued
+// min(ceil(target * percent / 100), cap), the cap being the target when 0.
+TEST(FeedProfile, OverrideWordAndLevelMatchTheModel) {
+  EXPECT_EQ(models::override_word(100), Profile::kOvrOne);
+  EXPECT_EQ(models::override_word(200), 256u);
+  EXPECT_EQ(models::override_word(0), 0u);
+  EXPECT_EQ(models::override_word(50), 64u);
+  EXPECT_THROW(models::override_word(200.5), std::invalid_argument);
+  EXPECT_THROW(models::override_word(-1), std::invalid_argument);
+  for (uint32_t t : {1u, 2u, 3u, 77u, 1000u, 65535u})
+    for (uint32_t cap : {0u, 1u, t / 2, t, t + 1, 2 * t}) {
+      const uint32_t top = cap != 0 ? std::min<uint32_t>(cap, 65535) : t;
+      for (unsigned w = 0; w <= 300; ++w) {
+        const double pct = std::min(w, 256u) * 100.0 / 128;
+        const double want = std::min<double>(std::ceil(t * pct / 100 - 1e-9), top);
+        ASSERT_EQ(Profile::override_target(t, std::min<uint32_t>(cap, 65535), w), want)
+            << t << " " << cap << " " << w;
+      }
+      EXPECT_EQ(Profile::override_target(t, cap, Profile::kOvrOne), std::min(t, top));
+    }
 }
 
 }  // namespace

@@ -87,7 +87,9 @@ inline void check_profiled_program(const ProfileCase& c, nlohmann::json* report 
   ASSERT_FALSE(g_on.empty());
   EXPECT_EQ(g_on.size(), g_off.size());
   EXPECT_TRUE(g_on == g_off) << "the step streams visit different lattice points";
-  EXPECT_GE(j_on["simulated_clocks"].get<double>(), j_off["simulated_clocks"].get<double>());
+  // (A feed override above 100 % may go faster than the programmed feed.)
+  if (c.extra.find("--feed-override") == std::string::npos)
+    EXPECT_GE(j_on["simulated_clocks"].get<double>(), j_off["simulated_clocks"].get<double>());
 }
 
 }  // namespace hwinterp::testing

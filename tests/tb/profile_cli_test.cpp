@@ -3,6 +3,7 @@
 // and writes the per-tick speed.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <string>
 
@@ -31,7 +32,9 @@ TEST(ProfileCli, BadValuesExitTwoNamingThem) {
         Case{kLimits + "--ops 10 --end-speed 30000", "--end-speed"},
         Case{kLimits + "--ops 10 --moves x.csv", "one of --ops"},
         Case{kLimits + "--moves " + dir + "/bad.csv", "bad.csv:3"},
-        Case{"--max-velocity 20000 --max-accel 5e5 --max-jerk 1e-9 --ops 10", "jerk 1e-09"}}) {
+        Case{"--max-velocity 20000 --max-accel 5e5 --max-jerk 1e-9 --ops 10", "jerk 1e-09"},
+        Case{kLimits + "--ops 10 --feed-override 1:250", "'1:250' is outside 0..200"},
+        Case{kLimits + "--ops 10 --feed-override 0:50,1:0", "'1:0' stops the feed"}}) {
     const CliResult r = run(c.args);
     EXPECT_EQ(r.code, 2) << c.args << "\n" << r.err;
     EXPECT_NE(r.err.find(c.names), std::string::npos) << c.args << "\n" << r.err;
@@ -58,6 +61,33 @@ TEST(ProfileCli, AStreamEndsEveryMoveWithinTheLimits) {
   EXPECT_LE(j["peak"]["accel"].get<double>(), 5e5 * (1 + 1e-9));
   EXPECT_LE(j["peak"]["jerk"].get<double>(), 3e7 * (1 + 1e-9));
   EXPECT_GT(slurp(csv).size(), 100u);
+}
+
+// The feed override: at 50 % from the start the move's peak speed is half the
+// limit's level (ceil), it takes longer, the limits hold, and the JSON lists
+// the schedule; 200 % stays at the velocity limit.
+TEST(ProfileCli, TheFeedOverrideScalesTheSpeedWithinTheLimits) {
+  const std::string dir = hwinterp::testing::scratch_dir("profile_cli");
+  const auto at = [&](const std::string& ovr) {
+    const std::string json = dir + "/o" + std::to_string(ovr.size()) + ".json";
+    const CliResult r = run(kLimits + "--ops 20000 " + ovr + " --json " + json);
+    EXPECT_EQ(r.code, 0) << r.err;
+    return hwinterp::Json::parse(slurp(json));
+  };
+  const auto full = at(""), half = at("--feed-override 0:50"), twice = at("--feed-override 0:200");
+  const double level = full["registers"]["level_speed"].get<double>();
+  const double top = full["registers"]["max_level"].get<double>();
+  EXPECT_NEAR(half["peak"]["speed"].get<double>(), std::ceil(top / 2) * level, level);
+  EXPECT_GT(half["seconds_at_rest"].get<double>(), 1.5 * full["seconds_at_rest"].get<double>());
+  EXPECT_EQ(twice["peak"]["speed"].get<double>(), full["peak"]["speed"].get<double>());
+  EXPECT_EQ(half["ops"].get<uint64_t>(), 20000u);
+  for (const auto* j : {&half, &twice}) {
+    EXPECT_LE((*j)["peak"]["accel"].get<double>(), 5e5 * (1 + 1e-9));
+    EXPECT_LE((*j)["peak"]["jerk"].get<double>(), 3e7 * (1 + 1e-9));
+  }
+  ASSERT_EQ(half["feed_override"].size(), 1u);
+  EXPECT_EQ(half["feed_override"][0]["word"].get<unsigned>(), 64u);
+  EXPECT_EQ(full["feed_override"].size(), 0u);
 }
 
 }  // namespace
