@@ -77,7 +77,11 @@ hwinterp_synth_block(NAME motion_soc_wb_n3 TOP motion_soc_wb FILES motion_soc YO
   VARIANT motion_top_n3 PARAMS FIFO_DEPTH=16)
 # feed_profile: the jerk-limited feed profile (docs/profile.md) at the widths
 # the harness runs it (tb/lockstep/harness_profile.h; rtl/CMakeLists.txt
-# Verilates Vfeed_profile_harness_cc from this line).
+# Verilates Vfeed_profile_f<W>_cc from this line, at every variant's FEED_W).
 hwinterp_synth_block(NAME feed_profile TOP feed_profile FILES feed_profile
   PARAMS FEED_W=24 SPD_W=48 TICK_W=10 LEN_W=10 LVL_W=16 OPS_W=28)
+# motion_profile: motion_top behind the feed profile (rtl/motion_profile.sv),
+# at motion_top_n3's widths and the profile's above.
+hwinterp_synth_block(NAME motion_profile_n3 TOP motion_profile FILES motion_profile
+  VARIANT motion_top_n3 PARAMS SPD_W=48 TICK_W=10 LEN_W=10 LVL_W=16 MV_OPS_W=28)
 hwinterp_finish_variants()

@@ -6,7 +6,8 @@ usage: scripts/fusesoc_cores.py [--check]
 
 One core file per list: hwinterp:cores:<core> for every core,
 hwinterp:soc:motion_soc for motion_soc behind its register blocks, and
-hwinterp:blocks:feed_profile for the feed profile. Targets:
+hwinterp:blocks:feed_profile for the feed profile and
+hwinterp:blocks:motion_profile for motion_top behind it. Targets:
 
   default  the RTL files, in the list's order
   lint     Verilator --lint-only -Wall at the core's default parameters
@@ -45,9 +46,10 @@ DESCRIPTIONS = {
                   "(AXI4-Lite or Wishbone), command FIFO, timebase, watchdog",
     "feed_profile": "hwinterp feed_profile: jerk-limited feed profile (S-curve or trapezoid) "
                     "for a core's feed input",
+    "motion_profile": "hwinterp motion_profile: motion_top behind the jerk-limited feed profile",
 }
 # The library part of each VLNV (hwinterp:<library>:<core>); cores by default.
-LIBRARY = {"motion_soc": "soc", "feed_profile": "blocks"}
+LIBRARY = {"motion_soc": "soc", "feed_profile": "blocks", "motion_profile": "blocks"}
 
 
 def vlnv_of(core):
