@@ -17,6 +17,54 @@ namespace {
 
 using Profile = FeedProfile<16, 48, 8, 10, 16, 28>;
 
+// Both faces of the block, out of reset (the RTL's RAM random from `seed`).
+struct Faces {
+  VerilatedContext context;
+  Vfeed_profile_cc rtl;
+  Profile hls;
+  explicit Faces(uint64_t seed) : rtl((context.randSeed(static_cast<int>(seed)), &context)) {
+    hls.reset();
+    // Reset over a rising edge (the asynchronous reset wins at the edge).
+    rtl.rst_ni = 0;
+    for (int e : {0, 1, 0}) {
+      rtl.clk_i = e;
+      rtl.eval();
+    }
+    rtl.rst_ni = 1;
+    rtl.eval();
+  }
+  ~Faces() { rtl.final(); }
+
+  // One clock: both faces' outputs (registers) compared before the edge,
+  // then the same pins into both. `taken`: the offered move was taken.
+  ::testing::AssertionResult clock(const Profile::Command& cmd, bool valid, bool hold, uint64_t q,
+                                   unsigned len, unsigned ovr, bool& taken) {
+    rtl.q_i = q;
+    rtl.len_i = len;
+    rtl.cmd_valid_i = valid;
+    rtl.cmd_ops_i = cmd.ops.to_uint();
+    rtl.cmd_target_i = cmd.target.to_uint();
+    rtl.cmd_end_i = cmd.end.to_uint();
+    rtl.cmd_max_i = cmd.max.to_uint();
+    rtl.hold_i = hold;
+    rtl.ovr_i = ovr;
+    if (rtl.feed_o != hls.feed() || rtl.level_o != hls.state().c || rtl.speed_o != hls.state().v ||
+        rtl.busy_o != hls.busy() || rtl.cmd_ready_o != hls.cmd_ready())
+      return ::testing::AssertionFailure()
+             << "RTL feed " << rtl.feed_o << " level " << rtl.level_o << " speed " << rtl.speed_o
+             << " busy " << int(rtl.busy_o) << " ready " << int(rtl.cmd_ready_o) << ", HLS feed "
+             << hls.feed() << " level " << hls.state().c << " speed " << hls.state().v << " busy "
+             << hls.busy() << " ready " << hls.cmd_ready();
+    taken = valid && hls.cmd_ready();
+    rtl.clk_i = 1;
+    rtl.eval();
+    hls.clock(valid, cmd, hold, q, len, ovr);
+    rtl.clk_i = 0;
+    rtl.eval();
+    return ::testing::AssertionSuccess();
+  }
+};
+
 TEST(FeedProfileRtl, MatchesTheHlsFaceOnEveryClock) {
   struct RestoreThreadContext {
     ~RestoreThreadContext() { Verilated::threadContextp(Verilated::defaultContextp()); }
@@ -24,11 +72,8 @@ TEST(FeedProfileRtl, MatchesTheHlsFaceOnEveryClock) {
   std::mt19937_64 rng(21);
   uint64_t clocks = 0, moves_done = 0;
   for (int k = 0; k < 12; ++k) {
-    VerilatedContext context;
-    context.randSeed(k + 1);
-    Vfeed_profile_cc rtl(&context);
-    Profile hls;
-    hls.reset();
+    Faces f(static_cast<uint64_t>(k) + 1);
+    Profile& hls = f.hls;
     models::ProfileBuild b;
     b.tick_w = 8;
     b.clock_hz = 1e6;
@@ -38,14 +83,6 @@ TEST(FeedProfileRtl, MatchesTheHlsFaceOnEveryClock) {
     // A second configuration, offered on the pins at random times.
     const models::ProfileRegisters regs2 =
         models::profile_registers({vel(rng), acc(rng), jerk(rng)}, b);
-    // Reset over a rising edge (the asynchronous reset wins at the edge).
-    rtl.rst_ni = 0;
-    for (int e : {0, 1, 0}) {
-      rtl.clk_i = e;
-      rtl.eval();
-    }
-    rtl.rst_ni = 1;
-    rtl.eval();
     std::uniform_int_distribution<uint32_t> ops(1, 3000), pct(0, 99);
     Profile::Command cmd;
     bool valid = false, hold = false, second = false;
@@ -63,27 +100,9 @@ TEST(FeedProfileRtl, MatchesTheHlsFaceOnEveryClock) {
       if (clk % 4096 == 0) hold = pct(rng) < 10;
       if (clk % 1000 == 0 && pct(rng) < 20) second = !second;
       const models::ProfileRegisters& r = second ? regs2 : regs;
-      rtl.q_i = r.q;
-      rtl.len_i = r.len;
-      rtl.cmd_valid_i = valid;
-      rtl.cmd_ops_i = cmd.ops.to_uint();
-      rtl.cmd_target_i = cmd.target.to_uint();
-      rtl.cmd_end_i = cmd.end.to_uint();
-      rtl.cmd_max_i = 0;
-      rtl.hold_i = hold;
-      rtl.ovr_i = Profile::kOvrOne;
-      // Outputs before the edge: both faces' registers.
-      ASSERT_EQ(rtl.feed_o, hls.feed()) << "case " << k << " clock " << clk;
-      ASSERT_EQ(rtl.level_o, hls.state().c) << "case " << k << " clock " << clk;
-      ASSERT_EQ(rtl.speed_o, hls.state().v) << "case " << k << " clock " << clk;
-      ASSERT_EQ(rtl.busy_o, hls.busy()) << "case " << k << " clock " << clk;
-      ASSERT_EQ(rtl.cmd_ready_o, hls.cmd_ready()) << "case " << k << " clock " << clk;
-      const bool take = valid && hls.cmd_ready();
-      rtl.clk_i = 1;
-      rtl.eval();
-      hls.clock(valid, cmd, hold, r.q, r.len);
-      rtl.clk_i = 0;
-      rtl.eval();
+      bool take = false;
+      ASSERT_TRUE(f.clock(cmd, valid, hold, r.q, r.len, Profile::kOvrOne, take))
+          << "case " << k << " clock " << clk;
       if (take) {
         valid = false;
         ++sent;
@@ -95,7 +114,6 @@ TEST(FeedProfileRtl, MatchesTheHlsFaceOnEveryClock) {
       }
     }
     EXPECT_EQ(sent, moves) << "case " << k;
-    rtl.final();
   }
   std::printf("%llu clocks, %llu moves compared\n", static_cast<unsigned long long>(clocks),
               static_cast<unsigned long long>(moves_done));
@@ -111,24 +129,14 @@ TEST(FeedProfileRtl, MatchesTheHlsFaceOnEveryClockUnderTheOverride) {
   std::mt19937_64 rng(25);
   uint64_t clocks = 0, moves_done = 0, changes = 0;
   for (int k = 0; k < 8; ++k) {
-    VerilatedContext context;
-    context.randSeed(k + 101);
-    Vfeed_profile_cc rtl(&context);
-    Profile hls;
-    hls.reset();
+    Faces f(static_cast<uint64_t>(k) + 101);
+    Profile& hls = f.hls;
     models::ProfileBuild b;
     b.tick_w = 8;
     b.clock_hz = 1e6;
     std::uniform_real_distribution<double> vel(5e3, 5e4), acc(1e5, 1e6), jerk(1e7, 1e8);
     const models::ProfileRegisters regs =
         models::profile_registers({vel(rng), acc(rng), jerk(rng)}, b);
-    rtl.rst_ni = 0;
-    for (int e : {0, 1, 0}) {
-      rtl.clk_i = e;
-      rtl.eval();
-    }
-    rtl.rst_ni = 1;
-    rtl.eval();
     std::uniform_int_distribution<uint32_t> ops(1, 3000), pct(0, 99), word(0, 511);
     Profile::Command cmd;
     bool valid = false, hold = false;
@@ -155,26 +163,9 @@ TEST(FeedProfileRtl, MatchesTheHlsFaceOnEveryClockUnderTheOverride) {
         ++changes;
       }
       if (clk > 2'000'000 && ovr < 64) ovr = 64;
-      rtl.q_i = regs.q;
-      rtl.len_i = regs.len;
-      rtl.cmd_valid_i = valid;
-      rtl.cmd_ops_i = cmd.ops.to_uint();
-      rtl.cmd_target_i = cmd.target.to_uint();
-      rtl.cmd_end_i = cmd.end.to_uint();
-      rtl.cmd_max_i = cmd.max.to_uint();
-      rtl.hold_i = hold;
-      rtl.ovr_i = ovr;
-      ASSERT_EQ(rtl.feed_o, hls.feed()) << "case " << k << " clock " << clk;
-      ASSERT_EQ(rtl.level_o, hls.state().c) << "case " << k << " clock " << clk;
-      ASSERT_EQ(rtl.speed_o, hls.state().v) << "case " << k << " clock " << clk;
-      ASSERT_EQ(rtl.busy_o, hls.busy()) << "case " << k << " clock " << clk;
-      ASSERT_EQ(rtl.cmd_ready_o, hls.cmd_ready()) << "case " << k << " clock " << clk;
-      const bool take = valid && hls.cmd_ready();
-      rtl.clk_i = 1;
-      rtl.eval();
-      hls.clock(valid, cmd, hold, regs.q, regs.len, ovr);
-      rtl.clk_i = 0;
-      rtl.eval();
+      bool take = false;
+      ASSERT_TRUE(f.clock(cmd, valid, hold, regs.q, regs.len, ovr, take))
+          << "case " << k << " clock " << clk;
       if (take) {
         valid = false;
         ++sent;
@@ -187,7 +178,6 @@ TEST(FeedProfileRtl, MatchesTheHlsFaceOnEveryClockUnderTheOverride) {
     }
     EXPECT_EQ(sent, moves) << "case " << k;
     EXPECT_FALSE(hls.busy()) << "case " << k;
-    rtl.final();
   }
   std::printf("%llu clocks, %llu moves, %llu override changes compared\n",
               static_cast<unsigned long long>(clocks), static_cast<unsigned long long>(moves_done),
