@@ -26,8 +26,8 @@ namespace hwinterp::hls {
 namespace log_uop {
 enum Op : unsigned char {
   kMul,    // dst = mul(s1, s2): MUL_CYC + 1 clocks, MUL_K bits of s2 a clock
-  kSqrt,   // dst = sqrt(s1): SQRT_CYC clocks, one root bit a clock
-  kRecip,  // dst = recip(s1): FRAC_W + 1 clocks, one quotient bit a clock
+  kSqrt,   // dst = sqrt(s1): SQRT_CYC clocks, two root bits a clock
+  kRecip,  // dst = recip(s1): RECIP_CYC clocks, two quotient bits a clock
   kAdd,    // dst = s1 + s2: one clock
   kRsb,    // dst = 3.0 - (s1 << sh): one clock
   kPos,    // lattice position of axis dst = pos(s1, s2): MUL_CYC + 1 clocks
@@ -121,15 +121,18 @@ class LogStepper {
   static_assert(MUL_K >= 1 && MUL_K <= W, "MUL_K out of range");
   static_assert(SEG_W >= 2 && SEG_W <= POS_W && POS_W <= 62, "SEG_W/POS_W out of range");
   static constexpr int MUL_CYC = (W + MUL_K - 1) / MUL_K;  // digits of a multiply
-  static constexpr int SQRT_CYC = (W + FRAC_W + 1) / 2;    // root bits of sqrt(x 2^F)
-  static constexpr int RECIP_CYC = FRAC_W + 1;             // quotient bits of 2^2F / x
-  static_assert(SQRT_CYC + 3 <= 64, "the square root's remainder needs SQRT_CYC + 3 bits");
+  static constexpr int SQRT_BITS = (W + FRAC_W + 1) / 2;  // root bits of sqrt(x 2^F)
+  static constexpr int RECIP_BITS = FRAC_W + 1;           // quotient bits of 2^2F / x
+  static constexpr int SQRT_CYC = (SQRT_BITS + 1) / 2;    // two bits a clock
+  static constexpr int RECIP_CYC = (RECIP_BITS + 1) / 2;
+  static constexpr int RECIP_PAD = 2 * RECIP_CYC - RECIP_BITS;  // a leading zero quotient bit
+  static_assert(SQRT_BITS + 3 <= 64, "the square root's remainder needs SQRT_BITS + 3 bits");
   static constexpr int CNT_W = 7;
   static_assert(SQRT_CYC < 128 && RECIP_CYC < 128 && MUL_CYC < 128, "op counter too narrow");
 
   using word_t = sc_dt::sc_uint<W>;
   using prod_t = sc_dt::sc_biguint<2 * W + 1>;
-  using rem_t = sc_dt::sc_uint<64>;  // the sqrt/recip remainder (<= max(SQRT_CYC + 3, W + 1) bits)
+  using rem_t = sc_dt::sc_uint<64>;  // the sqrt/recip remainder (<= max(SQRT_BITS + 3, W + 1) bits)
   using lpos_t = sc_dt::sc_uint<POS_W>;
   using seg_t = sc_dt::sc_uint<SEG_W>;
 
@@ -309,27 +312,36 @@ class LogStepper {
       }
       case log_uop::kSqrt:
       case log_uop::kRecip: {
-        // One digit of a restoring recurrence (the RTL shares it too):
-        // sqrt: digit i = SQRT_CYC-1-c of n = s1 2^F, bits 2i+1..2i of n,
-        //   i.e. bits 2i+1-F..2i-F of s1 (zero below bit 0); trial 4 root + 1;
-        // recip: 2^2F / s1, the remainder starting at 2^(F-1); trial s1.
+        // Two digits of a restoring recurrence a clock (the RTL shares it too),
+        // steps j = 2c and 2c + 1:
+        // sqrt: digit i = 2 SQRT_CYC-1-j of n = s1 2^F, bits 2i+1..2i of n,
+        //   i.e. bits 2i+1-F..2i-F of s1 (zero below bit 0 and from bit W);
+        //   trial 4 root + 1;
+        // recip: 2^2F / s1, the remainder starting at 2^(F-1-RECIP_PAD);
+        //   trial s1.
         const bool sqrt = u.op == log_uop::kSqrt;
-        const rem_t res_in = c == 0 ? rem_t(0) : res_q_;
-        rem_t rem2, trial;
-        if (sqrt) {
-          const int lo = 2 * (SQRT_CYC - 1 - static_cast<int>(c)) - FRAC_W;
-          unsigned pair = 0;
-          if (lo + 1 >= 0 && lo + 1 < W && s1[lo + 1]) pair |= 2;
-          if (lo >= 0 && lo < W && s1[lo]) pair |= 1;
-          rem2 = ((c == 0 ? rem_t(0) : rem_q_) << 2) | pair;
-          trial = (res_in << 2) | 1;
-        } else {
-          rem2 = (c == 0 ? rem_t(rem_t(1) << (FRAC_W - 1)) : rem_q_) << 1;
-          trial = rem_t(s1.to_uint64());
+        rem_t res = c == 0 ? rem_t(0) : res_q_;
+        rem_t rem = c == 0 ? (sqrt ? rem_t(0) : rem_t(rem_t(1) << (FRAC_W - 1 - RECIP_PAD)))
+                           : rem_q_;
+        for (int k = 0; k < 2; ++k) {
+          rem_t rem2, trial;
+          if (sqrt) {
+            const int lo = 2 * (2 * SQRT_CYC - 1 - (2 * static_cast<int>(c) + k)) - FRAC_W;
+            unsigned pair = 0;
+            if (lo + 1 >= 0 && lo + 1 < W && s1[lo + 1]) pair |= 2;
+            if (lo >= 0 && lo < W && s1[lo]) pair |= 1;
+            rem2 = (rem << 2) | pair;
+            trial = (res << 2) | 1;
+          } else {
+            rem2 = rem << 1;
+            trial = rem_t(s1.to_uint64());
+          }
+          const bool bit = rem2 >= trial;
+          rem = bit ? rem_t(rem2 - trial) : rem2;
+          res = (res << 1) | rem_t(bit);
         }
-        const bool bit = rem2 >= trial;
-        rem_q_ = bit ? rem_t(rem2 - trial) : rem2;
-        res_q_ = (res_in << 1) | rem_t(bit);
+        rem_q_ = rem;
+        res_q_ = res;
         if (c + 1 < (sqrt ? SQRT_CYC : RECIP_CYC)) {
           cnt_q_ = c + 1;
         } else {

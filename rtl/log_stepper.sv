@@ -22,9 +22,12 @@
 // operation at a time (the program is the `rom` function below, the same
 // table as hls/log_stepper.h): a two-stage multiplier that takes MUL_K bits
 // of its second operand a clock (MUL_CYC + 1 clocks, MUL_CYC = ceil(W /
-// MUL_K); the exact product truncated to the format), a square root and a reciprocal by digit
-// recurrence (one result bit a clock: SQRT_CYC = ceil((W + FRAC_W) / 2) and
-// FRAC_W + 1 clocks), adds and 3 - (x << s) in one clock.
+// MUL_K); the exact product truncated to the format), a square root and a
+// reciprocal by restoring digit recurrence, two result bits a clock (two
+// radix-2 steps chained in one clock, the same bits as one a clock: a square
+// root of SQRT_CYC = ceil(ceil((W + FRAC_W) / 2) / 2) clocks, a reciprocal of
+// RECIP_CYC = ceil((FRAC_W + 1) / 2) clocks; an odd count of result bits
+// starts with a leading zero bit), adds and 3 - (x << s) in one clock.
 // models/log_stepper_model.h gives the arithmetic bit for bit, the
 // normalised even step (one reciprocal for both of Eq. 14's and Eq. 15's
 // ratios) and the accepted commands. A point's lattice positions are
@@ -33,7 +36,8 @@
 // point's (all four axes move forward: every delta is >= 0).
 //
 // Clocks per odd+even cycle (two points), nothing waiting:
-//   25 (MUL_CYC + 1) + SQRT_CYC + 2 (FRAC_W + 1) + 13.
+//   25 (MUL_CYC + 1) + SQRT_CYC + 2 RECIP_CYC + 13
+// (log_stepper_n4: 188, log_stepper_edge: 233).
 //
 // Pipeline: the coarse engine computes the next point while the fine stage
 // runs the previous ones. Between them sit the segment register and the fine
@@ -93,9 +97,13 @@ module log_stepper #(
 );
   localparam int W         = INT_W + FRAC_W;
   localparam int MulCyc    = (W + MUL_K - 1) / MUL_K;
-  localparam int SqrtCyc   = (W + FRAC_W + 1) / 2;
-  localparam int RecipCyc  = FRAC_W + 1;
-  localparam int RemW      = (SqrtCyc + 3 > W + 1) ? SqrtCyc + 3 : W + 1;
+  localparam int SqrtBits  = (W + FRAC_W + 1) / 2;  // root bits of sqrt(x 2^F)
+  localparam int RecipBits = FRAC_W + 1;  // quotient bits of 2^2F / x
+  localparam int SqrtCyc   = (SqrtBits + 1) / 2;  // two bits a clock
+  localparam int RecipCyc  = (RecipBits + 1) / 2;
+  localparam int RecipPad  = 2 * RecipCyc - RecipBits;  // a leading zero quotient bit (0 or 1)
+  localparam int RadW      = 4 * SqrtCyc;
+  localparam int RemW      = (SqrtBits + 3 > W + 1) ? SqrtBits + 3 : W + 1;
   localparam int ProdW     = 2 * W + 1;
   localparam int PosSh     = 2 * FRAC_W - 16;  // models::kLogPosShift = 16
   localparam int NRegs     = 22;
@@ -266,14 +274,15 @@ module log_stepper #(
   // The remainder and the partial result never reach their top bit before
   // the shift (they stay below the divisor / 2 root + 1): it is not read.
   /* verilator lint_off UNUSEDSIGNAL */
-  logic [RemW-1:0]         rem_in, res_in;
+  logic [RemW-1:0]         rem_in, res_in, rem_a, res_a;
   /* verilator lint_on UNUSEDSIGNAL */
-  logic [RemW-1:0]         rem2, trial;
-  logic [1:0]              pair;
-  // The square root's radicand s1 2^FRAC_W, top digit first: loaded from
-  // the next operand, shifted by a digit on each clock of a SQRT (a shift
+  logic [RemW-1:0]         rem2_a, trial_a, rem2_b, trial_b;
+  logic                    bit_a, bit_b;
+  logic [1:0]              pair_a, pair_b;
+  // The square root's radicand s1 2^FRAC_W, top digits first: loaded from
+  // the next operand, shifted by two digits on each clock of a SQRT (a shift
   // register instead of a select by the counter).
-  logic [2*SqrtCyc-1:0]    rad_q, rad_d;
+  logic [RadW-1:0]         rad_q, rad_d;
   logic                    cnt_last;
   logic [4*POS_W-1:0]      lnew_q, lnew_d, lprev_q, lprev_d;
   // Segment register and the tags of the segments in the fine stage.
@@ -287,8 +296,8 @@ module log_stepper #(
   // Fine stage outputs.
   logic                    fine_ready, fine_busy, fine_done;
 
-  assign rad_d     = (act_q && op == OpSqrt && !cnt_last) ? rad_q << 2 :
-                     (2*SqrtCyc)'(s1_d) << FRAC_W;
+  assign rad_d     = (act_q && op == OpSqrt && !cnt_last) ? rad_q << 4 :
+                     RadW'(s1_d) << FRAC_W;
   // Multiplier: digit cnt of s2 times s1, placed at bit MUL_K cnt. The digit
   // and the place (one-hot) are registered one clock ahead, from the next
   // operand and count, so the product starts at registers. (AND-OR selects:
@@ -313,29 +322,42 @@ module log_stepper #(
   // accumulator adds it a clock later; at cnt = MulCyc, acc_sum is the product.
   assign acc_sum   = first_q ? '0 : acc_q + pp_q;
   assign pos_round = acc_sum + (ProdW'(1) << (PosSh - 1));
-  // X >= x_end, registered from the next register values (X changes only on
-  // its ADD): the stop rule's compare is off the EMIT -> pc path.
+  // X >= x_end, registered from the registers (X changes only on its ADD,
+  // pc 36, six operations and 22 clocks or more before the even EMIT reads
+  // it, pc 42): the stop rule's compare is off the EMIT -> pc path and off
+  // the write port's path (the multiplier's final add).
   logic past_end_q, past_end_d;
-  assign past_end_d = reg_d[RX*W +: W] >= reg_d[RXEnd*W +: W];
+  assign past_end_d = reg_q[RX*W +: W] >= reg_q[RXEnd*W +: W];
   assign emit_last = sh[0] && past_end_q;
   assign cmd_take  = cmd_valid_i && !act_q && !abort_i;
 
+  // Two steps of the restoring recurrence a clock, a then b.
   always_comb begin
-    // Digit SqrtCyc-1-cnt of n = s1 2^FRAC_W: the top two bits of rad_q.
-    pair = rad_q[2*SqrtCyc-1 -: 2];
-    rem_in = '0;
+    // Digits 2 (SqrtCyc-cnt)-1 and 2 (SqrtCyc-cnt)-2 of n = s1 2^FRAC_W: the
+    // top four bits of rad_q.
+    pair_a = rad_q[RadW-1 -: 2];
+    pair_b = rad_q[RadW-3 -: 2];
     res_in = first_q ? '0 : res_q;
-    rem2   = '0;
-    trial  = '0;
     if (op == OpSqrt) begin
-      rem_in = first_q ? '0 : rem_q;
-      rem2   = {rem_in[RemW-3:0], pair};
-      trial  = {res_in[RemW-3:0], 2'b01};
+      rem_in  = first_q ? '0 : rem_q;
+      rem2_a  = {rem_in[RemW-3:0], pair_a};
+      trial_a = {res_in[RemW-3:0], 2'b01};
     end else begin
-      rem_in = first_q ? RemW'(1) << (FRAC_W - 1) : rem_q;
-      rem2   = {rem_in[RemW-2:0], 1'b0};
-      trial  = RemW'(s1_q);
+      rem_in  = first_q ? RemW'(1) << (FRAC_W - 1 - RecipPad) : rem_q;
+      rem2_a  = {rem_in[RemW-2:0], 1'b0};
+      trial_a = RemW'(s1_q);
     end
+    bit_a = rem2_a >= trial_a;
+    rem_a = bit_a ? rem2_a - trial_a : rem2_a;
+    res_a = {res_in[RemW-2:0], bit_a};
+    if (op == OpSqrt) begin
+      rem2_b  = {rem_a[RemW-3:0], pair_b};
+      trial_b = {res_a[RemW-3:0], 2'b01};
+    end else begin
+      rem2_b  = {rem_a[RemW-2:0], 1'b0};
+      trial_b = RemW'(s1_q);
+    end
+    bit_b = rem2_b >= trial_b;
   end
 
   // The one register-file write port: what the operation at pc_q writes on
@@ -394,13 +416,8 @@ module log_stepper #(
     seg_valid_d = seg_valid_q && !(fine_ready || abort_i);
     cnt_last    = 1'b0;
     if (op == OpSqrt || op == OpRecip) begin
-      if (rem2 >= trial) begin
-        rem_d = rem2 - trial;
-        res_d = {res_in[RemW-2:0], 1'b1};
-      end else begin
-        rem_d = rem2;
-        res_d = {res_in[RemW-2:0], 1'b0};
-      end
+      rem_d = bit_b ? rem2_b - trial_b : rem2_b;
+      res_d = {res_a[RemW-2:0], bit_b};
     end
     unique case (op)
       OpMul, OpPos:    cnt_last = (cnt_q == 7'(MulCyc));

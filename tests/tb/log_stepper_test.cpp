@@ -105,7 +105,7 @@ Emissions<Cfg> emissions(const A::Command& cmd, uint64_t feed) {
 
 // With segments far shorter than a point's computation the coarse engine
 // sets the pace: one odd+even cycle every 25 (MUL_CYC + 1) + SQRT_CYC +
-// 2 (FRAC_W + 1) + 13 clocks (rtl/log_stepper.sv), and the fine stage waits.
+// 2 RECIP_CYC + 13 clocks (rtl/log_stepper.sv), and the fine stage waits.
 TYPED_TEST(LogStepperLockstep, CoarseEngineTakesTheDocumentedClocksPerCycle) {
   using Core = hls::LogStepper<TypeParam>;
   const VariantSpec l = V<TypeParam>::spec();
@@ -118,7 +118,7 @@ TYPED_TEST(LogStepperLockstep, CoarseEngineTakesTheDocumentedClocksPerCycle) {
   const auto e = emissions<TypeParam>(cmd, l.full_feed());
   ASSERT_EQ(e.clocks.size(), cmd.points);
   const uint64_t cycle =
-      25 * (Core::MUL_CYC + 1) + Core::SQRT_CYC + 2 * (TypeParam::FRAC_W + 1) + 13;
+      25 * (Core::MUL_CYC + 1) + Core::SQRT_CYC + 2 * Core::RECIP_CYC + 13;
   for (size_t k = 3; k < e.clocks.size(); k += 2)
     EXPECT_EQ(e.clocks[k] - e.clocks[k - 2], cycle) << "point " << k + 1;
   EXPECT_GT(e.underrun, 0u) << "1-step segments at full feed outrun the coarse engine";
