@@ -18,16 +18,26 @@
 // while no curve is being computed: the next curve's command is taken while
 // the fine stage still runs the last segments of the previous one.
 //
-// Coarse engine: a micro-programmed datapath over a register file, one
-// operation at a time (the program is the `rom` function below, the same
-// table as hls/log_stepper.h): a two-stage multiplier that takes MUL_K bits
-// of its second operand a clock (MUL_CYC + 1 clocks, MUL_CYC = ceil(W /
-// MUL_K); the exact product truncated to the format), a square root and a
-// reciprocal by restoring digit recurrence, two result bits a clock (two
-// radix-2 steps chained in one clock, the same bits as one a clock: a square
-// root of SQRT_CYC = ceil(ceil((W + FRAC_W) / 2) / 2) clocks, a reciprocal of
-// RECIP_CYC = ceil((FRAC_W + 1) / 2) clocks; an odd count of result bits
-// starts with a leading zero bit), adds and 3 - (x << s) in one clock.
+// Coarse engine: a micro-programmed datapath over a register file (the
+// program is the `rom` function below, the same table as hls/log_stepper.h)
+// with two units that run at the same time:
+//  - the engine, one operation at a time: a two-stage multiplier that takes
+//    MUL_K bits of its second operand a clock (MUL_CYC + 1 clocks, MUL_CYC =
+//    ceil(W / MUL_K); the exact product truncated to the format), adds and
+//    3 - (x << s) in one clock;
+//  - the divider: a square root or a reciprocal by restoring digit
+//    recurrence, two result bits a clock (two radix-2 steps chained in one
+//    clock, the same bits as one a clock: a square root takes SQRT_CYC =
+//    ceil(ceil((W + FRAC_W) / 2) / 2) clocks, a reciprocal RECIP_CYC =
+//    ceil((FRAC_W + 1) / 2); an odd count of result bits starts with a
+//    leading zero bit). The engine starts it in one clock (SQRT, RECIP: the
+//    divider keeps its own copy of the operand) and goes on with the
+//    operations that do not need its result (the previous even point's
+//    lattice positions while u = 1 / sqrt(q^2 + ab^2) is computed, the rest
+//    of N14 and N15 and the odd point while 1 / D is); GET waits for the
+//    result and writes it to a register.
+// Pipeline depth: the divider one operation deep beside the engine; the
+// multiplier two stages (partial product, accumulate).
 // models/log_stepper_model.h gives the arithmetic bit for bit, the
 // normalised even step (one reciprocal for both of Eq. 14's and Eq. 15's
 // ratios) and the accepted commands. A point's lattice positions are
@@ -35,9 +45,11 @@
 // never accumulates; the segment delta is the difference to the previous
 // point's (all four axes move forward: every delta is >= 0).
 //
-// Clocks per odd+even cycle (two points), nothing waiting:
-//   25 (MUL_CYC + 1) + SQRT_CYC + 2 RECIP_CYC + 13
-// (log_stepper_n4: 188, log_stepper_edge: 233).
+// Clocks per odd+even cycle (two points), nothing waiting, with M =
+// MUL_CYC + 1 (the three GETs' waits are the max terms):
+//   25 M + 16 + max(1, SQRT_CYC + 1 - 2 M) + max(1, RECIP_CYC - 2 M)
+//        + max(1, RECIP_CYC - 5 - 7 M)
+// (log_stepper_n4: 157, 78.5 a point; log_stepper_edge: 197).
 //
 // Pipeline: the coarse engine computes the next point while the fine stage
 // runs the previous ones. Between them sit the segment register and the fine
@@ -148,7 +160,7 @@ module log_stepper #(
 
   // Operations and registers (hls/log_stepper.h, namespace log_uop).
   localparam logic [2:0] OpMul = 3'd0, OpSqrt = 3'd1, OpRecip = 3'd2, OpAdd = 3'd3,
-                         OpRsb = 3'd4, OpPos = 3'd5, OpEmit = 3'd6;
+                         OpRsb = 3'd4, OpPos = 3'd5, OpEmit = 3'd6, OpGet = 3'd7;
   localparam logic [4:0] ROne = 5'd0, RThree = 5'd1, RB = 5'd2, RAb = 5'd3, RDl = 5'd4,
                          RXEnd = 5'd5, RK0 = 5'd6, RK1 = 5'd7, RK2 = 5'd8, RK3 = 5'd9,
                          RAb2 = 5'd10, RBdl = 5'd11, RX = 5'd12, RA = 5'd13, RQ = 5'd14,
@@ -179,43 +191,46 @@ module log_stepper #(
       6'd3: begin f_op = OpAdd; f_dst = RQ; f_s1 = RT0; f_s2 = ROne; end  // q = 1 + b X0
       6'd4: begin f_op = OpMul; f_dst = RT0; f_s1 = RQ; f_s2 = RQ; end  // q^2
       6'd5: begin f_op = OpAdd; f_dst = RT0; f_s1 = RT0; f_s2 = RAb2; end  // q^2 + ab^2
-      6'd6: begin f_op = OpSqrt; f_dst = RT0; f_s1 = RT0; end  // root
-      6'd7: begin f_op = OpRecip; f_dst = RU; f_s1 = RT0; end  // u = 1 / root
-      6'd8: begin f_op = OpMul; f_dst = RT0; f_s1 = RQ; f_s2 = RU; end  // q u
-      6'd9: begin f_op = OpMul; f_dst = RDx; f_s1 = RDl; f_s2 = RT0; end  // dX10
-      6'd10: begin f_op = OpMul; f_dst = RT1; f_s1 = RAb; f_s2 = RU; end  // ab u
-      6'd11: begin f_op = OpMul; f_dst = RDa; f_s1 = RDl; f_s2 = RT1; end  // dA10
-      6'd12: begin f_op = OpMul; f_dst = RT0; f_s1 = RT1; f_s2 = RT1; end  // s2 = sin^2 theta
-      6'd13: begin f_op = OpMul; f_dst = RDp; f_s1 = RBdl; f_s2 = RU; end  // d' = dA10 / a
-      6'd14: begin f_op = OpMul; f_dst = RE; f_s1 = RDp; f_s2 = RT0; end  // e = d' s2
-      6'd15: begin f_op = OpRsb; f_dst = RT0; f_s1 = RDp; f_sh = 2'd2; end  // 3 - 4d'
-      6'd16: begin f_op = OpMul; f_dst = RT1; f_s1 = RE; f_s2 = RT0; end  // e (3 - 4d')
-      6'd17: begin f_op = OpRsb; f_dst = RQ; f_s1 = RT1; f_sh = 2'd1; end  // D
-      6'd18: begin f_op = OpMul; f_dst = RT0; f_s1 = RDp; f_s2 = RT0; end  // d' (3 - 4d')
-      6'd19: begin f_op = OpRsb; f_dst = RU; f_s1 = RT0; f_sh = 2'd1; end  // N15
-      6'd20: begin f_op = OpRsb; f_dst = RT0; f_s1 = RDp; f_sh = 2'd3; end  // 3 - 8d'
-      6'd21: begin f_op = OpMul; f_dst = RT1; f_s1 = RDp; f_s2 = RE; end  // d' e
-      6'd22: begin f_op = OpMul; f_dst = RT0; f_s1 = RT1; f_s2 = RT0; end  // d' e (3 - 8d')
-      6'd23: begin f_op = OpRsb; f_dst = RDp; f_s1 = RT0; f_sh = 2'd1; end  // N14
-      6'd24: begin f_op = OpRecip; f_dst = RT0; f_s1 = RQ; end  // 1 / D
-      6'd25: begin f_op = OpMul; f_dst = RE; f_s1 = RDp; f_s2 = RT0; end  // N14 / D
-      6'd26: begin f_op = OpMul; f_dst = RQ; f_s1 = RU; f_s2 = RT0; end  // N15 / D
-      6'd27: begin f_op = OpAdd; f_dst = RX; f_s1 = RX; f_s2 = RDx; end  // X1
-      6'd28: begin f_op = OpAdd; f_dst = RA; f_s1 = RA; f_s2 = RDa; end  // A1
-      6'd29: begin f_op = OpPos; f_dst = 5'd0; f_s1 = RX; f_s2 = RK0; end  // X steps
-      6'd30: begin f_op = OpPos; f_dst = 5'd1; f_s1 = RX; f_s2 = RK1; end  // Y steps
-      6'd31: begin f_op = OpPos; f_dst = 5'd2; f_s1 = RX; f_s2 = RK2; end  // Z steps
-      6'd32: begin f_op = OpPos; f_dst = 5'd3; f_s1 = RA; f_s2 = RK3; end  // A steps
-      6'd33: begin f_op = OpEmit; end  // odd point
-      6'd34: begin f_op = OpMul; f_dst = RDx; f_s1 = RE; f_s2 = RDx; end  // dX21 = (N14 / D) dX10
-      6'd35: begin f_op = OpMul; f_dst = RDa; f_s1 = RQ; f_s2 = RDa; end  // dA21 = (N15 / D) dA10
-      6'd36: begin f_op = OpAdd; f_dst = RX; f_s1 = RX; f_s2 = RDx; end  // X2
-      6'd37: begin f_op = OpAdd; f_dst = RA; f_s1 = RA; f_s2 = RDa; end  // A2
-      6'd38: begin f_op = OpPos; f_dst = 5'd0; f_s1 = RX; f_s2 = RK0; end
-      6'd39: begin f_op = OpPos; f_dst = 5'd1; f_s1 = RX; f_s2 = RK1; end
-      6'd40: begin f_op = OpPos; f_dst = 5'd2; f_s1 = RX; f_s2 = RK2; end
-      6'd41: begin f_op = OpPos; f_dst = 5'd3; f_s1 = RA; f_s2 = RK3; end
-      6'd42: begin f_op = OpEmit; f_sh = 2'd1; end  // even point; X2 >= x_end ends the curve
+      6'd6: begin f_op = OpSqrt; f_s1 = RT0; end  // start: root (the divider runs alone)
+      6'd7: begin f_op = OpPos; f_dst = 5'd0; f_s1 = RX; f_s2 = RK0; end  // last cycle's even point: X steps
+      6'd8: begin f_op = OpPos; f_dst = 5'd1; f_s1 = RX; f_s2 = RK1; end  // Y steps
+      6'd9: begin f_op = OpGet; f_dst = RT0; end  // root
+      6'd10: begin f_op = OpRecip; f_s1 = RT0; end  // start: u = 1 / root
+      6'd11: begin f_op = OpPos; f_dst = 5'd2; f_s1 = RX; f_s2 = RK2; end  // Z steps
+      6'd12: begin f_op = OpPos; f_dst = 5'd3; f_s1 = RA; f_s2 = RK3; end  // A steps
+      6'd13: begin f_op = OpEmit; f_sh = 2'd1; end  // even point (none before the first cycle); X2 >= x_end ends the curve
+      6'd14: begin f_op = OpGet; f_dst = RU; end  // u
+      6'd15: begin f_op = OpMul; f_dst = RT0; f_s1 = RQ; f_s2 = RU; end  // q u
+      6'd16: begin f_op = OpMul; f_dst = RDx; f_s1 = RDl; f_s2 = RT0; end  // dX10
+      6'd17: begin f_op = OpMul; f_dst = RT1; f_s1 = RAb; f_s2 = RU; end  // ab u
+      6'd18: begin f_op = OpMul; f_dst = RDa; f_s1 = RDl; f_s2 = RT1; end  // dA10
+      6'd19: begin f_op = OpMul; f_dst = RT0; f_s1 = RT1; f_s2 = RT1; end  // s2 = sin^2 theta
+      6'd20: begin f_op = OpMul; f_dst = RDp; f_s1 = RBdl; f_s2 = RU; end  // d' = dA10 / a
+      6'd21: begin f_op = OpMul; f_dst = RE; f_s1 = RDp; f_s2 = RT0; end  // e = d' s2
+      6'd22: begin f_op = OpRsb; f_dst = RT0; f_s1 = RDp; f_sh = 2'd2; end  // 3 - 4d'
+      6'd23: begin f_op = OpMul; f_dst = RT1; f_s1 = RE; f_s2 = RT0; end  // e (3 - 4d')
+      6'd24: begin f_op = OpRsb; f_dst = RQ; f_s1 = RT1; f_sh = 2'd1; end  // D
+      6'd25: begin f_op = OpRecip; f_s1 = RQ; end  // start: 1 / D
+      6'd26: begin f_op = OpMul; f_dst = RT0; f_s1 = RDp; f_s2 = RT0; end  // d' (3 - 4d')
+      6'd27: begin f_op = OpRsb; f_dst = RU; f_s1 = RT0; f_sh = 2'd1; end  // N15
+      6'd28: begin f_op = OpRsb; f_dst = RT0; f_s1 = RDp; f_sh = 2'd3; end  // 3 - 8d'
+      6'd29: begin f_op = OpMul; f_dst = RT1; f_s1 = RDp; f_s2 = RE; end  // d' e
+      6'd30: begin f_op = OpMul; f_dst = RT0; f_s1 = RT1; f_s2 = RT0; end  // d' e (3 - 8d')
+      6'd31: begin f_op = OpRsb; f_dst = RDp; f_s1 = RT0; f_sh = 2'd1; end  // N14
+      6'd32: begin f_op = OpAdd; f_dst = RX; f_s1 = RX; f_s2 = RDx; end  // X1
+      6'd33: begin f_op = OpAdd; f_dst = RA; f_s1 = RA; f_s2 = RDa; end  // A1
+      6'd34: begin f_op = OpPos; f_dst = 5'd0; f_s1 = RX; f_s2 = RK0; end  // X steps
+      6'd35: begin f_op = OpPos; f_dst = 5'd1; f_s1 = RX; f_s2 = RK1; end  // Y steps
+      6'd36: begin f_op = OpPos; f_dst = 5'd2; f_s1 = RX; f_s2 = RK2; end  // Z steps
+      6'd37: begin f_op = OpPos; f_dst = 5'd3; f_s1 = RA; f_s2 = RK3; end  // A steps
+      6'd38: begin f_op = OpEmit; end  // odd point
+      6'd39: begin f_op = OpGet; f_dst = RT0; end  // 1 / D
+      6'd40: begin f_op = OpMul; f_dst = RE; f_s1 = RDp; f_s2 = RT0; end  // N14 / D
+      6'd41: begin f_op = OpMul; f_dst = RQ; f_s1 = RU; f_s2 = RT0; end  // N15 / D
+      6'd42: begin f_op = OpMul; f_dst = RDx; f_s1 = RE; f_s2 = RDx; end  // dX21 = (N14 / D) dX10
+      6'd43: begin f_op = OpMul; f_dst = RDa; f_s1 = RQ; f_s2 = RDa; end  // dA21 = (N15 / D) dA10
+      6'd44: begin f_op = OpAdd; f_dst = RX; f_s1 = RX; f_s2 = RDx; end  // X2
+      6'd45: begin f_op = OpAdd; f_dst = RA; f_s1 = RA; f_s2 = RDa; f_sh = 2'd1; end  // A2; the next cycle
       default: ;
     endcase
     rom = {f_op, f_dst, f_s1, f_s2, f_sh};
@@ -274,14 +289,20 @@ module log_stepper #(
   // The remainder and the partial result never reach their top bit before
   // the shift (they stay below the divisor / 2 root + 1): it is not read.
   /* verilator lint_off UNUSEDSIGNAL */
-  logic [RemW-1:0]         rem_in, res_in, rem_a, res_a;
+  logic [RemW-1:0]         rem_a, res_a;
   /* verilator lint_on UNUSEDSIGNAL */
+  // The divider: running, square root (else reciprocal), its clock, its
+  // divisor (the reciprocal's operand).
+  logic                    dv_act_q, dv_act_d, dv_sqrt_q, dv_sqrt_d, dv_start, dv_last;
+  logic [5:0]              dv_cnt_q, dv_cnt_d;
+  logic [W-1:0]            dvs_q, dvs_d;
+  logic                    even_q, even_d;  // an even point waits for its positions and EMIT
   logic [RemW-1:0]         rem2_a, trial_a, rem2_b, trial_b;
   logic                    bit_a, bit_b;
   logic [1:0]              pair_a, pair_b;
   // The square root's radicand s1 2^FRAC_W, top digits first: loaded from
-  // the next operand, shifted by two digits on each clock of a SQRT (a shift
-  // register instead of a select by the counter).
+  // the operand at the start, shifted by two digits on each clock of the
+  // divider (a shift register instead of a select by the counter).
   logic [RadW-1:0]         rad_q, rad_d;
   logic                    cnt_last;
   logic [4*POS_W-1:0]      lnew_q, lnew_d, lprev_q, lprev_d;
@@ -296,8 +317,9 @@ module log_stepper #(
   // Fine stage outputs.
   logic                    fine_ready, fine_busy, fine_done;
 
-  assign rad_d     = (act_q && op == OpSqrt && !cnt_last) ? rad_q << 4 :
-                     RadW'(s1_d) << FRAC_W;
+  assign dv_start  = act_q && !abort_i && (op == OpSqrt || op == OpRecip);
+  assign dv_last   = dv_cnt_q == (dv_sqrt_q ? 6'(SqrtCyc - 1) : 6'(RecipCyc - 1));
+  assign rad_d     = dv_start ? RadW'(s1_q) << FRAC_W : rad_q << 4;
   // Multiplier: digit cnt of s2 times s1, placed at bit MUL_K cnt. The digit
   // and the place (one-hot) are registered one clock ahead, from the next
   // operand and count, so the product starts at registers. (AND-OR selects:
@@ -322,42 +344,66 @@ module log_stepper #(
   // accumulator adds it a clock later; at cnt = MulCyc, acc_sum is the product.
   assign acc_sum   = first_q ? '0 : acc_q + pp_q;
   assign pos_round = acc_sum + (ProdW'(1) << (PosSh - 1));
-  // X >= x_end, registered from the registers (X changes only on its ADD,
-  // pc 36, six operations and 22 clocks or more before the even EMIT reads
-  // it, pc 42): the stop rule's compare is off the EMIT -> pc path and off
-  // the write port's path (the multiplier's final add).
+  // X >= x_end, registered from the registers (X changes only on its ADDs,
+  // pc 32 and 44, nine operations or more before the even EMIT reads it,
+  // pc 13): the stop rule's compare is off the EMIT -> pc path and off the
+  // write port's path (the multiplier's final add).
   logic past_end_q, past_end_d;
   assign past_end_d = reg_q[RX*W +: W] >= reg_q[RXEnd*W +: W];
   assign emit_last = sh[0] && past_end_q;
   assign cmd_take  = cmd_valid_i && !act_q && !abort_i;
 
-  // Two steps of the restoring recurrence a clock, a then b.
+  // Two steps of the restoring recurrence a clock, a then b, from the
+  // divider's registers (the start sets rem_q and res_q to the first step's).
   always_comb begin
     // Digits 2 (SqrtCyc-cnt)-1 and 2 (SqrtCyc-cnt)-2 of n = s1 2^FRAC_W: the
     // top four bits of rad_q.
     pair_a = rad_q[RadW-1 -: 2];
     pair_b = rad_q[RadW-3 -: 2];
-    res_in = first_q ? '0 : res_q;
-    if (op == OpSqrt) begin
-      rem_in  = first_q ? '0 : rem_q;
-      rem2_a  = {rem_in[RemW-3:0], pair_a};
-      trial_a = {res_in[RemW-3:0], 2'b01};
+    if (dv_sqrt_q) begin
+      rem2_a  = {rem_q[RemW-3:0], pair_a};
+      trial_a = {res_q[RemW-3:0], 2'b01};
     end else begin
-      rem_in  = first_q ? RemW'(1) << (FRAC_W - 1 - RecipPad) : rem_q;
-      rem2_a  = {rem_in[RemW-2:0], 1'b0};
-      trial_a = RemW'(s1_q);
+      rem2_a  = {rem_q[RemW-2:0], 1'b0};
+      trial_a = RemW'(dvs_q);
     end
     bit_a = rem2_a >= trial_a;
     rem_a = bit_a ? rem2_a - trial_a : rem2_a;
-    res_a = {res_in[RemW-2:0], bit_a};
-    if (op == OpSqrt) begin
+    res_a = {res_q[RemW-2:0], bit_a};
+    if (dv_sqrt_q) begin
       rem2_b  = {rem_a[RemW-3:0], pair_b};
       trial_b = {res_a[RemW-3:0], 2'b01};
     end else begin
       rem2_b  = {rem_a[RemW-2:0], 1'b0};
-      trial_b = RemW'(s1_q);
+      trial_b = RemW'(dvs_q);
     end
     bit_b = rem2_b >= trial_b;
+  end
+
+  // The divider's registers: the start loads the operand and the initial
+  // remainder; each running clock makes two result bits.
+  always_comb begin
+    dv_act_d  = dv_act_q;
+    dv_sqrt_d = dv_sqrt_q;
+    dv_cnt_d  = dv_cnt_q;
+    dvs_d     = dvs_q;
+    rem_d     = rem_q;
+    res_d     = res_q;
+    if (abort_i) begin
+      dv_act_d = 1'b0;
+    end else if (dv_start) begin
+      dv_act_d  = 1'b1;
+      dv_sqrt_d = op == OpSqrt;
+      dv_cnt_d  = '0;
+      dvs_d     = s1_q;
+      rem_d     = (op == OpSqrt) ? '0 : RemW'(1) << (FRAC_W - 1 - RecipPad);
+      res_d     = '0;
+    end else if (dv_act_q) begin
+      rem_d    = bit_b ? rem2_b - trial_b : rem2_b;
+      res_d    = {res_a[RemW-2:0], bit_b};
+      dv_cnt_d = dv_cnt_q + 6'd1;
+      if (dv_last) dv_act_d = 1'b0;
+    end
   end
 
   // The one register-file write port: what the operation at pc_q writes on
@@ -368,13 +414,13 @@ module log_stepper #(
   always_comb begin
     unique case (op)
       OpMul:          wdata = W'(acc_sum >> FRAC_W);
-      OpSqrt, OpRecip: wdata = W'(res_d);
+      OpGet:          wdata = W'(res_q);
       OpAdd:          wdata = s1_q + s2_q;
       OpRsb:          wdata = rd(reg_q, RThree) - (s1_q << sh);
       default:        wdata = '0;
     endcase
     we = act_q && !abort_i && cnt_last &&
-         (op == OpMul || op == OpSqrt || op == OpRecip || op == OpAdd || op == OpRsb);
+         (op == OpMul || op == OpGet || op == OpAdd || op == OpRsb);
   end
 
   // Register i: the command's word on a take (B..K3; X and A restart at 0),
@@ -407,23 +453,17 @@ module log_stepper #(
     pc_d        = pc_q;
     cnt_d       = cnt_q;
     acc_d       = acc_q;
-    rem_d       = rem_q;
-    res_d       = res_q;
+    even_d      = even_q;
     lnew_d      = lnew_q;
     lprev_d     = lprev_q;
     seg_d       = seg_q;
     seg_last_d  = seg_last_q;
     seg_valid_d = seg_valid_q && !(fine_ready || abort_i);
     cnt_last    = 1'b0;
-    if (op == OpSqrt || op == OpRecip) begin
-      rem_d = bit_b ? rem2_b - trial_b : rem2_b;
-      res_d = {res_a[RemW-2:0], bit_b};
-    end
     unique case (op)
       OpMul, OpPos:    cnt_last = (cnt_q == 7'(MulCyc));
-      OpSqrt:          cnt_last = (cnt_q == 7'(SqrtCyc - 1));
-      OpRecip:         cnt_last = (cnt_q == 7'(RecipCyc - 1));
-      OpAdd, OpRsb:    cnt_last = 1'b1;
+      OpGet:           cnt_last = !dv_act_q;
+      OpSqrt, OpRecip, OpAdd, OpRsb: cnt_last = 1'b1;
       default:         cnt_last = 1'b0;
     endcase
     if (abort_i) begin
@@ -432,20 +472,28 @@ module log_stepper #(
       if (op == OpMul || op == OpPos) acc_d = acc_sum;
       if (op == OpPos && cnt_last) lnew_d[dst[1:0]*POS_W +: POS_W] = POS_W'(pos_round >> PosSh);
       if (op == OpEmit) begin
-        if (!seg_valid_q) begin
+        if (sh[0] && !even_q) begin
+          pc_d = pc_q + 6'd1;  // the first cycle: no even point yet
+        end else if (!seg_valid_q) begin
           for (int i = 0; i < 4; i++)
             seg_d[i*SEG_W +: SEG_W] =
                 SEG_W'(lnew_q[i*POS_W +: POS_W] - lprev_q[i*POS_W +: POS_W]);
           lprev_d     = lnew_q;
           seg_valid_d = 1'b1;
           seg_last_d  = emit_last;
+          even_d      = 1'b0;
           if (emit_last) act_d = 1'b0;
-          else if (sh[0]) pc_d = 6'(CycleStart);
           else pc_d = pc_q + 6'd1;
-          cnt_d = '0;
         end
       end else if (cnt_last) begin
-        pc_d  = pc_q + 6'd1;
+        // The last ADD of a cycle (sh = 1) computes its even point and goes
+        // to the next cycle.
+        if (op == OpAdd && sh[0]) begin
+          pc_d   = 6'(CycleStart);
+          even_d = 1'b1;
+        end else begin
+          pc_d = pc_q + 6'd1;
+        end
         cnt_d = '0;
       end else begin
         cnt_d = cnt_q + 7'd1;
@@ -454,6 +502,7 @@ module log_stepper #(
       act_d   = 1'b1;
       pc_d    = '0;
       cnt_d   = '0;
+      even_d  = 1'b0;
       lprev_d = '0;
     end
   end
@@ -498,6 +547,11 @@ module log_stepper #(
       pp_q        <= '0;
       rem_q       <= '0;
       res_q       <= '0;
+      dv_act_q    <= 1'b0;
+      dv_sqrt_q   <= 1'b0;
+      dv_cnt_q    <= '0;
+      dvs_q       <= '0;
+      even_q      <= 1'b0;
       lnew_q      <= '0;
       lprev_q     <= '0;
       seg_q       <= '0;
@@ -522,6 +576,11 @@ module log_stepper #(
       pp_q        <= pp_d;
       rem_q       <= rem_d;
       res_q       <= res_d;
+      dv_act_q    <= dv_act_d;
+      dv_sqrt_q   <= dv_sqrt_d;
+      dv_cnt_q    <= dv_cnt_d;
+      dvs_q       <= dvs_d;
+      even_q      <= even_d;
       lnew_q      <= lnew_d;
       lprev_q     <= lprev_d;
       seg_q       <= seg_d;
@@ -627,9 +686,9 @@ module log_stepper #(
                       !(f_seq[2] && f_seq[3]));
       // The program: the decoded operation is the one at pc_q, and a curve
       // whose predecessor's last segment is still the youngest in flight has
-      // not yet passed its first (odd) point.
-      a_pc: assert(pc_q <= 6'd42 && op == f_ent[19:17] && sh == f_ent[1:0]);
-      a_first: assert(!act_q || f_young_none || !f_young || pc_q <= 6'd33);
+      // not yet passed its first (odd) point, nor made an even one.
+      a_pc: assert(pc_q <= 6'd45 && op == f_ent[19:17] && sh == f_ent[1:0]);
+      a_first: assert(!act_q || f_young_none || !f_young || (pc_q <= 6'd38 && !even_q));
     end
   end
 `endif
