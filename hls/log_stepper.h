@@ -26,12 +26,14 @@ namespace hwinterp::hls {
 // the constants 1.0 and 3.0; 2..9 hold the command.
 namespace log_uop {
 enum Op : unsigned char {
-  kMul,    // dst = mul(s1, s2): MUL_CYC + 1 clocks, MUL_K bits of s2 a clock
+  kMul,    // dst = mul(s1, s2): MUL_CYC + 1 clocks, MUL_K bits of s2 a clock; sh = 1:
+           // MUL_CYC clocks, the write on the next multiply's first clock (which
+           // must not read dst)
   kSqrt,   // starts the divider on sqrt(s1) (SQRT_CYC clocks, two root bits a clock): one clock
   kRecip,  // starts the divider on recip(s1) (RECIP_CYC clocks, two quotient bits a clock): one clock
   kAdd,    // dst = s1 + s2: one clock; sh = 1: the cycle's last, go to kCycleStart
   kRsb,    // dst = 3.0 - (s1 << sh): one clock
-  kPos,    // lattice position of axis dst = pos(s1, s2): MUL_CYC + 1 clocks
+  kPos,    // lattice position of axis dst = pos(s1, s2): as kMul
   kEmit,   // waits for the segment register, fills it (sh = 1: the even point,
            // passed over in a curve's first cycle)
   kGet,    // waits for the divider, dst = its result: one clock once it is done
@@ -67,43 +69,43 @@ inline constexpr Uop kProgram[] = {
     {kAdd, kQ, kT0, kOne, 0},   // 3  q = 1 + b X0
     {kMul, kT0, kQ, kQ, 0},     // 4  q^2
     {kAdd, kT0, kT0, kAb2, 0},  // 5  q^2 + ab^2
-    {kSqrt, 0, kT0, 0, 0},      // 6  start: root (the divider runs alone)
-    {kPos, 0, kX, kK0, 0},      // 7  last cycle's even point: X steps
+    {kSqrt, 0, kT0, 0, 0},      // 6  start: root
+    {kPos, 0, kX, kK0, 1},      // 7  last cycle's even point: X steps
     {kPos, 1, kX, kK1, 0},      // 8  Y steps
     {kGet, kT0, 0, 0, 0},       // 9  root
     {kRecip, 0, kT0, 0, 0},     // 10 start: u = 1 / root
-    {kPos, 2, kX, kK2, 0},      // 11 Z steps
+    {kPos, 2, kX, kK2, 1},      // 11 Z steps
     {kPos, 3, kA, kK3, 0},      // 12 A steps
-    {kEmit, 0, 0, 0, 1},        // 13 even point (none before the first cycle); X2 >= x_end ends the curve
+    {kEmit, 0, 0, 0, 1},        // 13 even point (none in the first cycle); X2 >= x_end: the last
     {kGet, kU, 0, 0, 0},        // 14 u
-    {kMul, kT0, kQ, kU, 0},     // 15 q u
-    {kMul, kDx, kDl, kT0, 0},   // 16 dX10
-    {kMul, kT1, kAb, kU, 0},    // 17 ab u
-    {kMul, kDa, kDl, kT1, 0},   // 18 dA10
-    {kMul, kT0, kT1, kT1, 0},   // 19 s2 = sin^2 theta
-    {kMul, kDp, kBdl, kU, 0},   // 20 d' = dA10 / a
-    {kMul, kE, kDp, kT0, 0},    // 21 e = d' s2
+    {kMul, kT0, kQ, kU, 1},     // 15 q u
+    {kMul, kT1, kAb, kU, 1},    // 16 ab u
+    {kMul, kDp, kBdl, kU, 1},   // 17 d' = dA10 / a
+    {kMul, kE, kT1, kT1, 1},    // 18 s2 = sin^2 theta
+    {kMul, kDx, kDl, kT0, 1},   // 19 dX10
+    {kMul, kE, kDp, kE, 1},     // 20 e = d' s2
+    {kMul, kDa, kDl, kT1, 0},   // 21 dA10
     {kRsb, kT0, kDp, 0, 2},     // 22 3 - 4d'
     {kMul, kT1, kE, kT0, 0},    // 23 e (3 - 4d')
     {kRsb, kQ, kT1, 0, 1},      // 24 D
     {kRecip, 0, kQ, 0, 0},      // 25 start: 1 / D
-    {kMul, kT0, kDp, kT0, 0},   // 26 d' (3 - 4d')
-    {kRsb, kU, kT0, 0, 1},      // 27 N15
-    {kRsb, kT0, kDp, 0, 3},     // 28 3 - 8d'
-    {kMul, kT1, kDp, kE, 0},    // 29 d' e
+    {kMul, kT1, kDp, kE, 1},    // 26 d' e
+    {kMul, kT0, kDp, kT0, 0},   // 27 d' (3 - 4d')
+    {kRsb, kU, kT0, 0, 1},      // 28 N15
+    {kRsb, kT0, kDp, 0, 3},     // 29 3 - 8d'
     {kMul, kT0, kT1, kT0, 0},   // 30 d' e (3 - 8d')
     {kRsb, kDp, kT0, 0, 1},     // 31 N14
     {kAdd, kX, kX, kDx, 0},     // 32 X1
     {kAdd, kA, kA, kDa, 0},     // 33 A1
-    {kPos, 0, kX, kK0, 0},      // 34 X steps
-    {kPos, 1, kX, kK1, 0},      // 35 Y steps
-    {kPos, 2, kX, kK2, 0},      // 36 Z steps
+    {kPos, 0, kX, kK0, 1},      // 34 X steps
+    {kPos, 1, kX, kK1, 1},      // 35 Y steps
+    {kPos, 2, kX, kK2, 1},      // 36 Z steps
     {kPos, 3, kA, kK3, 0},      // 37 A steps
     {kEmit, 0, 0, 0, 0},        // 38 odd point
     {kGet, kT0, 0, 0, 0},       // 39 1 / D
-    {kMul, kE, kDp, kT0, 0},    // 40 N14 / D
-    {kMul, kQ, kU, kT0, 0},     // 41 N15 / D
-    {kMul, kDx, kE, kDx, 0},    // 42 dX21 = (N14 / D) dX10
+    {kMul, kE, kDp, kT0, 1},    // 40 N14 / D
+    {kMul, kQ, kU, kT0, 1},     // 41 N15 / D
+    {kMul, kDx, kE, kDx, 1},    // 42 dX21 = (N14 / D) dX10
     {kMul, kDa, kQ, kDa, 0},    // 43 dA21 = (N15 / D) dA10
     {kAdd, kX, kX, kDx, 0},     // 44 X2
     {kAdd, kA, kA, kDa, 1},     // 45 A2; the next cycle
@@ -176,6 +178,9 @@ class LogStepper {
     for (int r = 0; r < log_uop::kRegs; ++r) reg_q_[r] = 0;
     acc_q_ = 0;
     pp_q_ = 0;
+    wb_q_ = false;
+    wb_pos_q_ = false;
+    wb_dst_q_ = 0;
     rem_q_ = 0;
     res_q_ = 0;
     dv_act_q_ = false;
@@ -241,12 +246,14 @@ class LogStepper {
     if (in.abort) {
       act_q_ = false;
       dv_act_q_ = false;
+      wb_q_ = false;
     } else {
       // The divider's clock from its state before this edge; a start by the
       // engine on this edge replaces it.
       const bool dv_busy = dv_act_q_;
       bool started = false;
       if (act_q_) {
+        write_back();
         started = step_engine(seg_free, dv_busy);
       } else if (in.cmd_valid) {
         load(in.cmd);
@@ -326,6 +333,25 @@ class LogStepper {
     dv_cnt_q_ = c + 1;
   }
 
+  // A handed-over multiply's write (its last addition), on the next
+  // multiply's first clock: from acc_q_ and pp_q_ before that clock's edge.
+  void write_back() {
+    if (!wb_q_) return;
+    wb_q_ = false;
+    const prod_t acc = prod_t(acc_q_ + pp_q_);
+    if (wb_pos_q_) {
+      lnew_q_[wb_dst_q_] = pos_of(acc);
+    } else {
+      reg_q_[wb_dst_q_] = word_t((acc >> FRAC_W).range(W - 1, 0).to_uint64());
+    }
+  }
+
+  static lpos_t pos_of(const prod_t& acc) {
+    constexpr int SH = 2 * FRAC_W - 16;  // models::kLogPosShift = 16
+    const prod_t rounded = acc + (prod_t(1) << (SH - 1));
+    return lpos_t((rounded >> SH).range(POS_W - 1, 0).to_uint64());
+  }
+
   void next_op() {
     pc_q_ = pc_q_ + 1;
     cnt_q_ = 0;
@@ -345,7 +371,8 @@ class LogStepper {
         // Two stages: clock c < MUL_CYC forms pp = s1 digit_c << MUL_K c
         // (digit c: MUL_K bits of s2 from bit MUL_K c) into a register, and
         // the accumulator adds the previous clock's pp; clock MUL_CYC writes
-        // acc + pp. MUL_CYC + 1 clocks.
+        // acc + pp. MUL_CYC + 1 clocks; handed over (sh = 1) after clock
+        // MUL_CYC - 1, the write on the next clock (write_back).
         const prod_t acc = c == 0 ? prod_t(0) : prod_t(acc_q_ + pp_q_);
         if (c < static_cast<unsigned>(MUL_CYC)) {
           const sc_dt::sc_uint<MUL_K> digit = word_t(s2 >> (MUL_K * c)).range(MUL_K - 1, 0);
@@ -353,14 +380,19 @@ class LogStepper {
           pp <<= MUL_K * c;
           pp_q_ = pp;
           acc_q_ = acc;
-          cnt_q_ = c + 1;
+          if (u.sh && c + 1 == static_cast<unsigned>(MUL_CYC)) {
+            wb_q_ = true;
+            wb_pos_q_ = u.op == log_uop::kPos;
+            wb_dst_q_ = u.dst;
+            next_op();
+          } else {
+            cnt_q_ = c + 1;
+          }
         } else if (u.op == log_uop::kMul) {
           reg_q_[u.dst] = word_t((acc >> FRAC_W).range(W - 1, 0).to_uint64());
           next_op();
         } else {
-          constexpr int SH = 2 * FRAC_W - 16;  // models::kLogPosShift = 16
-          const prod_t rounded = acc + (prod_t(1) << (SH - 1));
-          lnew_q_[u.dst] = lpos_t((rounded >> SH).range(POS_W - 1, 0).to_uint64());
+          lnew_q_[u.dst] = pos_of(acc);
           next_op();
         }
         break;
@@ -426,6 +458,8 @@ class LogStepper {
   sc_dt::sc_uint<CNT_W> cnt_q_;    // clock within a multi-clock operation
   word_t reg_q_[log_uop::kRegs];   // registers 2.. (0 and 1 are constants)
   prod_t acc_q_, pp_q_;            // the multiplier's accumulator and registered partial product
+  bool wb_q_, wb_pos_q_;           // a handed-over multiply's write pending, to a lattice position
+  unsigned char wb_dst_q_;         // its register or axis
   bool even_q_;                    // an even point waits for its positions and EMIT
   // Divider: running, square root (else reciprocal), its clock, its operand,
   // remainder and root/quotient so far.

@@ -24,7 +24,11 @@
 //  - the engine, one operation at a time: a two-stage multiplier that takes
 //    MUL_K bits of its second operand a clock (MUL_CYC + 1 clocks, MUL_CYC =
 //    ceil(W / MUL_K); the exact product truncated to the format), adds and
-//    3 - (x << s) in one clock;
+//    3 - (x << s) in one clock. A multiply marked in the program (sh = 1:
+//    the next operation is a multiply that does not read its result) hands
+//    over after MUL_CYC clocks: its last addition and its write happen on the
+//    next multiply's first clock (the multiplier takes a new operation every
+//    MUL_CYC clocks);
 //  - the divider: a square root or a reciprocal by restoring digit
 //    recurrence, two result bits a clock (two radix-2 steps chained in one
 //    clock, the same bits as one a clock: a square root takes SQRT_CYC =
@@ -37,7 +41,9 @@
 //    of N14 and N15 and the odd point while 1 / D is); GET waits for the
 //    result and writes it to a register.
 // Pipeline depth: the divider one operation deep beside the engine; the
-// multiplier two stages (partial product, accumulate).
+// multiplier two stages (partial product, accumulate and write), with an
+// initiation interval of MUL_CYC clocks between independent multiplies and
+// MUL_CYC + 1 before a dependent one.
 // models/log_stepper_model.h gives the arithmetic bit for bit, the
 // normalised even step (one reciprocal for both of Eq. 14's and Eq. 15's
 // ratios) and the accepted commands. A point's lattice positions are
@@ -46,10 +52,11 @@
 // point's (all four axes move forward: every delta is >= 0).
 //
 // Clocks per odd+even cycle (two points), nothing waiting, with M =
-// MUL_CYC + 1 (the three GETs' waits are the max terms):
-//   25 M + 16 + max(1, SQRT_CYC + 1 - 2 M) + max(1, RECIP_CYC - 2 M)
-//        + max(1, RECIP_CYC - 5 - 7 M)
-// (log_stepper_n4: 157, 78.5 a point; log_stepper_edge: 197).
+// MUL_CYC + 1 (25 multiplies, 15 of them handing over a clock early; the
+// three GETs' waits are the max terms):
+//   25 M + 1 + max(1, SQRT_CYC + 2 - 2 M) + max(1, RECIP_CYC + 1 - 2 M)
+//        + max(1, RECIP_CYC - 1 - 7 M)
+// (log_stepper_n4: 144, 72 a point; log_stepper_edge: 183).
 //
 // Pipeline: the coarse engine computes the next point while the fine stage
 // runs the previous ones. Between them sit the segment register and the fine
@@ -191,43 +198,43 @@ module log_stepper #(
       6'd3: begin f_op = OpAdd; f_dst = RQ; f_s1 = RT0; f_s2 = ROne; end  // q = 1 + b X0
       6'd4: begin f_op = OpMul; f_dst = RT0; f_s1 = RQ; f_s2 = RQ; end  // q^2
       6'd5: begin f_op = OpAdd; f_dst = RT0; f_s1 = RT0; f_s2 = RAb2; end  // q^2 + ab^2
-      6'd6: begin f_op = OpSqrt; f_s1 = RT0; end  // start: root (the divider runs alone)
-      6'd7: begin f_op = OpPos; f_dst = 5'd0; f_s1 = RX; f_s2 = RK0; end  // last cycle's even point: X steps
+      6'd6: begin f_op = OpSqrt; f_s1 = RT0; end  // start: root
+      6'd7: begin f_op = OpPos; f_dst = 5'd0; f_s1 = RX; f_s2 = RK0; f_sh = 2'd1; end  // last cycle's even point: X steps
       6'd8: begin f_op = OpPos; f_dst = 5'd1; f_s1 = RX; f_s2 = RK1; end  // Y steps
       6'd9: begin f_op = OpGet; f_dst = RT0; end  // root
       6'd10: begin f_op = OpRecip; f_s1 = RT0; end  // start: u = 1 / root
-      6'd11: begin f_op = OpPos; f_dst = 5'd2; f_s1 = RX; f_s2 = RK2; end  // Z steps
+      6'd11: begin f_op = OpPos; f_dst = 5'd2; f_s1 = RX; f_s2 = RK2; f_sh = 2'd1; end  // Z steps
       6'd12: begin f_op = OpPos; f_dst = 5'd3; f_s1 = RA; f_s2 = RK3; end  // A steps
-      6'd13: begin f_op = OpEmit; f_sh = 2'd1; end  // even point (none before the first cycle); X2 >= x_end ends the curve
+      6'd13: begin f_op = OpEmit; f_sh = 2'd1; end  // even point (none in the first cycle); X2 >= x_end: the last
       6'd14: begin f_op = OpGet; f_dst = RU; end  // u
-      6'd15: begin f_op = OpMul; f_dst = RT0; f_s1 = RQ; f_s2 = RU; end  // q u
-      6'd16: begin f_op = OpMul; f_dst = RDx; f_s1 = RDl; f_s2 = RT0; end  // dX10
-      6'd17: begin f_op = OpMul; f_dst = RT1; f_s1 = RAb; f_s2 = RU; end  // ab u
-      6'd18: begin f_op = OpMul; f_dst = RDa; f_s1 = RDl; f_s2 = RT1; end  // dA10
-      6'd19: begin f_op = OpMul; f_dst = RT0; f_s1 = RT1; f_s2 = RT1; end  // s2 = sin^2 theta
-      6'd20: begin f_op = OpMul; f_dst = RDp; f_s1 = RBdl; f_s2 = RU; end  // d' = dA10 / a
-      6'd21: begin f_op = OpMul; f_dst = RE; f_s1 = RDp; f_s2 = RT0; end  // e = d' s2
+      6'd15: begin f_op = OpMul; f_dst = RT0; f_s1 = RQ; f_s2 = RU; f_sh = 2'd1; end  // q u
+      6'd16: begin f_op = OpMul; f_dst = RT1; f_s1 = RAb; f_s2 = RU; f_sh = 2'd1; end  // ab u
+      6'd17: begin f_op = OpMul; f_dst = RDp; f_s1 = RBdl; f_s2 = RU; f_sh = 2'd1; end  // d' = dA10 / a
+      6'd18: begin f_op = OpMul; f_dst = RE; f_s1 = RT1; f_s2 = RT1; f_sh = 2'd1; end  // s2 = sin^2 theta
+      6'd19: begin f_op = OpMul; f_dst = RDx; f_s1 = RDl; f_s2 = RT0; f_sh = 2'd1; end  // dX10
+      6'd20: begin f_op = OpMul; f_dst = RE; f_s1 = RDp; f_s2 = RE; f_sh = 2'd1; end  // e = d' s2
+      6'd21: begin f_op = OpMul; f_dst = RDa; f_s1 = RDl; f_s2 = RT1; end  // dA10
       6'd22: begin f_op = OpRsb; f_dst = RT0; f_s1 = RDp; f_sh = 2'd2; end  // 3 - 4d'
       6'd23: begin f_op = OpMul; f_dst = RT1; f_s1 = RE; f_s2 = RT0; end  // e (3 - 4d')
       6'd24: begin f_op = OpRsb; f_dst = RQ; f_s1 = RT1; f_sh = 2'd1; end  // D
       6'd25: begin f_op = OpRecip; f_s1 = RQ; end  // start: 1 / D
-      6'd26: begin f_op = OpMul; f_dst = RT0; f_s1 = RDp; f_s2 = RT0; end  // d' (3 - 4d')
-      6'd27: begin f_op = OpRsb; f_dst = RU; f_s1 = RT0; f_sh = 2'd1; end  // N15
-      6'd28: begin f_op = OpRsb; f_dst = RT0; f_s1 = RDp; f_sh = 2'd3; end  // 3 - 8d'
-      6'd29: begin f_op = OpMul; f_dst = RT1; f_s1 = RDp; f_s2 = RE; end  // d' e
+      6'd26: begin f_op = OpMul; f_dst = RT1; f_s1 = RDp; f_s2 = RE; f_sh = 2'd1; end  // d' e
+      6'd27: begin f_op = OpMul; f_dst = RT0; f_s1 = RDp; f_s2 = RT0; end  // d' (3 - 4d')
+      6'd28: begin f_op = OpRsb; f_dst = RU; f_s1 = RT0; f_sh = 2'd1; end  // N15
+      6'd29: begin f_op = OpRsb; f_dst = RT0; f_s1 = RDp; f_sh = 2'd3; end  // 3 - 8d'
       6'd30: begin f_op = OpMul; f_dst = RT0; f_s1 = RT1; f_s2 = RT0; end  // d' e (3 - 8d')
       6'd31: begin f_op = OpRsb; f_dst = RDp; f_s1 = RT0; f_sh = 2'd1; end  // N14
       6'd32: begin f_op = OpAdd; f_dst = RX; f_s1 = RX; f_s2 = RDx; end  // X1
       6'd33: begin f_op = OpAdd; f_dst = RA; f_s1 = RA; f_s2 = RDa; end  // A1
-      6'd34: begin f_op = OpPos; f_dst = 5'd0; f_s1 = RX; f_s2 = RK0; end  // X steps
-      6'd35: begin f_op = OpPos; f_dst = 5'd1; f_s1 = RX; f_s2 = RK1; end  // Y steps
-      6'd36: begin f_op = OpPos; f_dst = 5'd2; f_s1 = RX; f_s2 = RK2; end  // Z steps
+      6'd34: begin f_op = OpPos; f_dst = 5'd0; f_s1 = RX; f_s2 = RK0; f_sh = 2'd1; end  // X steps
+      6'd35: begin f_op = OpPos; f_dst = 5'd1; f_s1 = RX; f_s2 = RK1; f_sh = 2'd1; end  // Y steps
+      6'd36: begin f_op = OpPos; f_dst = 5'd2; f_s1 = RX; f_s2 = RK2; f_sh = 2'd1; end  // Z steps
       6'd37: begin f_op = OpPos; f_dst = 5'd3; f_s1 = RA; f_s2 = RK3; end  // A steps
       6'd38: begin f_op = OpEmit; end  // odd point
       6'd39: begin f_op = OpGet; f_dst = RT0; end  // 1 / D
-      6'd40: begin f_op = OpMul; f_dst = RE; f_s1 = RDp; f_s2 = RT0; end  // N14 / D
-      6'd41: begin f_op = OpMul; f_dst = RQ; f_s1 = RU; f_s2 = RT0; end  // N15 / D
-      6'd42: begin f_op = OpMul; f_dst = RDx; f_s1 = RE; f_s2 = RDx; end  // dX21 = (N14 / D) dX10
+      6'd40: begin f_op = OpMul; f_dst = RE; f_s1 = RDp; f_s2 = RT0; f_sh = 2'd1; end  // N14 / D
+      6'd41: begin f_op = OpMul; f_dst = RQ; f_s1 = RU; f_s2 = RT0; f_sh = 2'd1; end  // N15 / D
+      6'd42: begin f_op = OpMul; f_dst = RDx; f_s1 = RE; f_s2 = RDx; f_sh = 2'd1; end  // dX21 = (N14 / D) dX10
       6'd43: begin f_op = OpMul; f_dst = RDa; f_s1 = RQ; f_s2 = RDa; end  // dA21 = (N15 / D) dA10
       6'd44: begin f_op = OpAdd; f_dst = RX; f_s1 = RX; f_s2 = RDx; end  // X2
       6'd45: begin f_op = OpAdd; f_dst = RA; f_s1 = RA; f_s2 = RDa; f_sh = 2'd1; end  // A2; the next cycle
@@ -274,14 +281,19 @@ module log_stepper #(
 
   assign rd1  = rd_any(reg_ld, src1_d);
   assign rd2  = rd_any(reg_ld, src2_d);
-  assign s1_d = (we && dst == src1_d) ? wdata : rd1;
-  assign s2_d = (we && dst == src2_d) ? wdata : rd2;
+  assign s1_d = (we && wdst == src1_d) ? wdata : rd1;
+  assign s2_d = (we && wdst == src2_d) ? wdata : rd2;
 
   // ---------------------------------------------------------------------------
   // Datapath units (their state: acc_q, rem_q, res_q).
   logic                    act_q, act_d;
   logic [6:0]              cnt_q, cnt_d;
-  logic [ProdW-1:0]        acc_q, acc_d, acc_sum, pp_q, pp_d, pos_round;
+  logic [ProdW-1:0]        acc_q, acc_d, acc_sum, acc_full, pp_q, pp_d, pos_round;
+  // A multiply's write one clock after its hand-over (sh = 1): pending, to
+  // a lattice position (POS), and to which register or axis.
+  logic                    wb_q, wb_d, wb_pos_q, wb_pos_d;
+  logic [4:0]              wb_dst_q, wb_dst_d, wdst;
+  logic                    ovl;  // the multiply at pc_q hands over early
   logic                    first_q, first_d;  // cnt_q == 0, registered from cnt_d (a unit's first clock)
   logic [MUL_K-1:0]        digit_q;  // digit cnt_q of s2 (registered)
   logic [W+MUL_K-1:0]      prod;   // s1 times one digit
@@ -341,9 +353,12 @@ module log_stepper #(
   assign prod      = s1_q * digit_q;
   assign first_d   = cnt_d == '0;
   // Two stages: pp_q registers s1 digit_cnt << MUL_K cnt (cnt < MulCyc), the
-  // accumulator adds it a clock later; at cnt = MulCyc, acc_sum is the product.
-  assign acc_sum   = first_q ? '0 : acc_q + pp_q;
-  assign pos_round = acc_sum + (ProdW'(1) << (PosSh - 1));
+  // accumulator adds it a clock later; at cnt = MulCyc, acc_full is the
+  // product (or, handed over, on the next multiply's first clock).
+  assign acc_full  = acc_q + pp_q;
+  assign acc_sum   = first_q ? '0 : acc_full;
+  assign pos_round = acc_full + (ProdW'(1) << (PosSh - 1));
+  assign ovl       = (op == OpMul || op == OpPos) && sh[0];
   // X >= x_end, registered from the registers (X changes only on its ADDs,
   // pc 32 and 44, nine operations or more before the even EMIT reads it,
   // pc 13): the stop rule's compare is off the EMIT -> pc path and off the
@@ -407,20 +422,28 @@ module log_stepper #(
   end
 
   // The one register-file write port: what the operation at pc_q writes on
-  // its last clock. (One port for every operation: a variable-index write
-  // per operation made Yosys build a 1232-bit shifter for each.)
+  // its last clock, or a handed-over multiply's product (then the operation
+  // at pc_q is a multiply on its first clock: it writes nothing). (One port
+  // for every operation: a variable-index write per operation made Yosys
+  // build a 1232-bit shifter for each.)
   logic [W-1:0] wdata;
   logic         we;
   always_comb begin
-    unique case (op)
-      OpMul:          wdata = W'(acc_sum >> FRAC_W);
-      OpGet:          wdata = W'(res_q);
-      OpAdd:          wdata = s1_q + s2_q;
-      OpRsb:          wdata = rd(reg_q, RThree) - (s1_q << sh);
-      default:        wdata = '0;
-    endcase
-    we = act_q && !abort_i && cnt_last &&
-         (op == OpMul || op == OpGet || op == OpAdd || op == OpRsb);
+    if (wb_q) begin
+      wdata = W'(acc_full >> FRAC_W);
+    end else begin
+      unique case (op)
+        OpMul:          wdata = W'(acc_full >> FRAC_W);
+        OpGet:          wdata = W'(res_q);
+        OpAdd:          wdata = s1_q + s2_q;
+        OpRsb:          wdata = rd(reg_q, RThree) - (s1_q << sh);
+        default:        wdata = '0;
+      endcase
+    end
+    wdst = wb_q ? wb_dst_q : dst;
+    we = act_q && !abort_i &&
+         ((wb_q && !wb_pos_q) ||
+          (cnt_last && !ovl && (op == OpMul || op == OpGet || op == OpAdd || op == OpRsb)));
   end
 
   // Register i: the command's word on a take (B..K3; X and A restart at 0),
@@ -443,7 +466,7 @@ module log_stepper #(
     end
     assign loads = (i <= RegK0 + 3) || 5'(i) == RX || 5'(i) == RA;
     assign reg_ld[i*W +: W] = (cmd_take && loads) ? load : reg_q[i*W +: W];
-    assign reg_d[i*W +: W]  = (we && dst == 5'(i)) ? wdata : reg_ld[i*W +: W];
+    assign reg_d[i*W +: W]  = (we && wdst == 5'(i)) ? wdata : reg_ld[i*W +: W];
   end
   assign reg_ld[2*W-1:0] = '0;  // registers 0 and 1 are constants, never stored
   assign reg_d[2*W-1:0]  = '0;
@@ -453,6 +476,9 @@ module log_stepper #(
     pc_d        = pc_q;
     cnt_d       = cnt_q;
     acc_d       = acc_q;
+    wb_d        = 1'b0;
+    wb_pos_d    = wb_pos_q;
+    wb_dst_d    = wb_dst_q;
     even_d      = even_q;
     lnew_d      = lnew_q;
     lprev_d     = lprev_q;
@@ -461,7 +487,7 @@ module log_stepper #(
     seg_valid_d = seg_valid_q && !(fine_ready || abort_i);
     cnt_last    = 1'b0;
     unique case (op)
-      OpMul, OpPos:    cnt_last = (cnt_q == 7'(MulCyc));
+      OpMul, OpPos:    cnt_last = (cnt_q == (sh[0] ? 7'(MulCyc - 1) : 7'(MulCyc)));
       OpGet:           cnt_last = !dv_act_q;
       OpSqrt, OpRecip, OpAdd, OpRsb: cnt_last = 1'b1;
       default:         cnt_last = 1'b0;
@@ -470,7 +496,15 @@ module log_stepper #(
       act_d = 1'b0;
     end else if (act_q) begin
       if (op == OpMul || op == OpPos) acc_d = acc_sum;
-      if (op == OpPos && cnt_last) lnew_d[dst[1:0]*POS_W +: POS_W] = POS_W'(pos_round >> PosSh);
+      if (op == OpPos && cnt_last && !ovl)
+        lnew_d[dst[1:0]*POS_W +: POS_W] = POS_W'(pos_round >> PosSh);
+      if (wb_q && wb_pos_q)
+        lnew_d[wb_dst_q[1:0]*POS_W +: POS_W] = POS_W'(pos_round >> PosSh);
+      if (ovl && cnt_last) begin
+        wb_d     = 1'b1;
+        wb_pos_d = op == OpPos;
+        wb_dst_d = dst;
+      end
       if (op == OpEmit) begin
         if (sh[0] && !even_q) begin
           pc_d = pc_q + 6'd1;  // the first cycle: no even point yet
@@ -545,6 +579,9 @@ module log_stepper #(
       s2_q        <= '0;
       acc_q       <= '0;
       pp_q        <= '0;
+      wb_q        <= 1'b0;
+      wb_pos_q    <= 1'b0;
+      wb_dst_q    <= '0;
       rem_q       <= '0;
       res_q       <= '0;
       dv_act_q    <= 1'b0;
@@ -574,6 +611,9 @@ module log_stepper #(
       s2_q        <= s2_d;
       acc_q       <= acc_d;
       pp_q        <= pp_d;
+      wb_q        <= wb_d;
+      wb_pos_q    <= wb_pos_d;
+      wb_dst_q    <= wb_dst_d;
       rem_q       <= rem_d;
       res_q       <= res_d;
       dv_act_q    <= dv_act_d;
