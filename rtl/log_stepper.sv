@@ -30,11 +30,13 @@
 //    next multiply's first clock (the multiplier takes a new operation every
 //    MUL_CYC clocks);
 //  - the divider: a square root or a reciprocal by restoring digit
-//    recurrence, two result bits a clock (two radix-2 steps chained in one
-//    clock, the same bits as one a clock: a square root takes SQRT_CYC =
-//    ceil(ceil((W + FRAC_W) / 2) / 2) clocks, a reciprocal RECIP_CYC =
-//    ceil((FRAC_W + 1) / 2); an odd count of result bits starts with a
-//    leading zero bit). The engine starts it in one clock (SQRT, RECIP: the
+//    recurrence, two result bits a clock (radix 4: the two bits chosen by
+//    three subtractions side by side, from the remainder r and root R so far
+//    16 r + 4 bits of the radicand against 8 R + 1, 16 R + 4 and 24 R + 9,
+//    4 r against d, 2 d and 3 d; the same bits as one a clock: a square root
+//    takes SQRT_CYC = ceil(ceil((W + FRAC_W) / 2) / 2) clocks, a reciprocal
+//    RECIP_CYC = ceil((FRAC_W + 1) / 2); an odd count of result bits starts
+//    with a leading zero bit). The engine starts it in one clock (SQRT, RECIP: the
 //    divider keeps its own copy of the operand) and goes on with the
 //    operations that do not need its result (the previous even point's
 //    lattice positions while u = 1 / sqrt(q^2 + ab^2) is computed, the rest
@@ -298,20 +300,23 @@ module log_stepper #(
   logic [MUL_K-1:0]        digit_q;  // digit cnt_q of s2 (registered)
   logic [W+MUL_K-1:0]      prod;   // s1 times one digit
   logic [RemW-1:0]         rem_q, rem_d, res_q, res_d;
-  // The remainder and the partial result never reach their top bit before
-  // the shift (they stay below the divisor / 2 root + 1): it is not read.
+  // The divider's three trial subtractions (CW bits) and their borrows: the
+  // differences' top bits and the root's and the square-root remainder's
+  // top bits are zero (the remainder stays below the divisor and below
+  // 2 R + 1, R below 2^SqrtBits): not read.
+  localparam int CW = RemW + 2;
   /* verilator lint_off UNUSEDSIGNAL */
-  logic [RemW-1:0]         rem_a, res_a;
+  logic [CW-1:0]           dv_a, dv_t1, dv_t2, dv_t3, dv_r1, dv_r2, dv_r3, dv_r;
+  logic [RemW:0]           m3_q, m3_d;  // 3 R + 1 (square root) or 3 d (reciprocal)
   /* verilator lint_on UNUSEDSIGNAL */
+  logic                    dv_b1, dv_b2, dv_b3;
+  logic [1:0]              dv_qd;  // the two result bits
   // The divider: running, square root (else reciprocal), its clock, its
   // divisor (the reciprocal's operand).
   logic                    dv_act_q, dv_act_d, dv_sqrt_q, dv_sqrt_d, dv_start, dv_last;
   logic [5:0]              dv_cnt_q, dv_cnt_d;
   logic [W-1:0]            dvs_q, dvs_d;
   logic                    even_q, even_d;  // an even point waits for its positions and EMIT
-  logic [RemW-1:0]         rem2_a, trial_a, rem2_b, trial_b;
-  logic                    bit_a, bit_b;
-  logic [1:0]              pair_a, pair_b;
   // The square root's radicand s1 2^FRAC_W, top digits first: loaded from
   // the operand at the start, shifted by two digits on each clock of the
   // divider (a shift register instead of a select by the counter).
@@ -368,31 +373,41 @@ module log_stepper #(
   assign emit_last = sh[0] && past_end_q;
   assign cmd_take  = cmd_valid_i && !act_q && !abort_i;
 
-  // Two steps of the restoring recurrence a clock, a then b, from the
-  // divider's registers (the start sets rem_q and res_q to the first step's).
+  // Two result bits a clock (radix 4), the three trials side by side:
+  //   square root, remainder r and root R so far, a = 16 r + the next two
+  //   digits of n = s1 2^FRAC_W (the top four bits of rad_q), trials
+  //   q (8 R + q) for q = 1, 2, 3: 8 R + 1, 16 R + 4, 8 (3 R + 1) + 1;
+  //   reciprocal, a = 4 r, trials d, 2 d, 3 d.
+  // The two bits are the largest q whose trial is <= a, the new remainder
+  // a minus it: the same as two radix-2 steps.
   always_comb begin
-    // Digits 2 (SqrtCyc-cnt)-1 and 2 (SqrtCyc-cnt)-2 of n = s1 2^FRAC_W: the
-    // top four bits of rad_q.
-    pair_a = rad_q[RadW-1 -: 2];
-    pair_b = rad_q[RadW-3 -: 2];
     if (dv_sqrt_q) begin
-      rem2_a  = {rem_q[RemW-3:0], pair_a};
-      trial_a = {res_q[RemW-3:0], 2'b01};
+      dv_a  = {rem_q[CW-5:0], rad_q[RadW-1 -: 4]};
+      dv_t1 = {res_q[CW-4:0], 3'b001};
+      dv_t2 = {res_q[CW-5:0], 4'b0100};
+      dv_t3 = {m3_q[CW-4:0], 3'b001};
     end else begin
-      rem2_a  = {rem_q[RemW-2:0], 1'b0};
-      trial_a = RemW'(dvs_q);
+      dv_a  = {rem_q, 2'b00};
+      dv_t1 = CW'(dvs_q);
+      dv_t2 = CW'({dvs_q, 1'b0});
+      dv_t3 = CW'(m3_q);
     end
-    bit_a = rem2_a >= trial_a;
-    rem_a = bit_a ? rem2_a - trial_a : rem2_a;
-    res_a = {res_q[RemW-2:0], bit_a};
-    if (dv_sqrt_q) begin
-      rem2_b  = {rem_a[RemW-3:0], pair_b};
-      trial_b = {res_a[RemW-3:0], 2'b01};
+    {dv_b1, dv_r1} = {1'b0, dv_a} - {1'b0, dv_t1};
+    {dv_b2, dv_r2} = {1'b0, dv_a} - {1'b0, dv_t2};
+    {dv_b3, dv_r3} = {1'b0, dv_a} - {1'b0, dv_t3};
+    if (!dv_b3) begin
+      dv_qd = 2'd3;
+      dv_r  = dv_r3;
+    end else if (!dv_b2) begin
+      dv_qd = 2'd2;
+      dv_r  = dv_r2;
+    end else if (!dv_b1) begin
+      dv_qd = 2'd1;
+      dv_r  = dv_r1;
     end else begin
-      rem2_b  = {rem_a[RemW-2:0], 1'b0};
-      trial_b = RemW'(dvs_q);
+      dv_qd = 2'd0;
+      dv_r  = dv_a;
     end
-    bit_b = rem2_b >= trial_b;
   end
 
   // The divider's registers: the start loads the operand and the initial
@@ -402,6 +417,7 @@ module log_stepper #(
     dv_sqrt_d = dv_sqrt_q;
     dv_cnt_d  = dv_cnt_q;
     dvs_d     = dvs_q;
+    m3_d      = m3_q;
     rem_d     = rem_q;
     res_d     = res_q;
     if (abort_i) begin
@@ -411,11 +427,21 @@ module log_stepper #(
       dv_sqrt_d = op == OpSqrt;
       dv_cnt_d  = '0;
       dvs_d     = s1_q;
+      m3_d      = (op == OpSqrt) ? (RemW+1)'(1) : (RemW+1)'(s1_q) + (RemW+1)'({s1_q, 1'b0});
       rem_d     = (op == OpSqrt) ? '0 : RemW'(1) << (FRAC_W - 1 - RecipPad);
       res_d     = '0;
     end else if (dv_act_q) begin
-      rem_d    = bit_b ? rem2_b - trial_b : rem2_b;
-      res_d    = {res_a[RemW-2:0], bit_b};
+      rem_d    = dv_r[RemW-1:0];
+      res_d    = {res_q[RemW-3:0], dv_qd};
+      // 3 R' + 1 with R' = 4 R + q: 4 (3 R + 1) + 3 q - 3.
+      if (dv_sqrt_q) begin
+        unique case (dv_qd)
+          2'd0: m3_d = {m3_q[RemW-2:0], 2'b00} - (RemW+1)'(3);
+          2'd1: m3_d = {m3_q[RemW-2:0], 2'b00};
+          2'd2: m3_d = {m3_q[RemW-2:0], 2'b00} + (RemW+1)'(3);
+          default: m3_d = {m3_q[RemW-2:0], 2'b00} + (RemW+1)'(6);
+        endcase
+      end
       dv_cnt_d = dv_cnt_q + 6'd1;
       if (dv_last) dv_act_d = 1'b0;
     end
@@ -588,6 +614,7 @@ module log_stepper #(
       dv_sqrt_q   <= 1'b0;
       dv_cnt_q    <= '0;
       dvs_q       <= '0;
+      m3_q        <= '0;
       even_q      <= 1'b0;
       lnew_q      <= '0;
       lprev_q     <= '0;
@@ -620,6 +647,7 @@ module log_stepper #(
       dv_sqrt_q   <= dv_sqrt_d;
       dv_cnt_q    <= dv_cnt_d;
       dvs_q       <= dvs_d;
+      m3_q        <= m3_d;
       even_q      <= even_d;
       lnew_q      <= lnew_d;
       lprev_q     <= lprev_d;
