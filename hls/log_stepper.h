@@ -29,8 +29,8 @@ enum Op : unsigned char {
   kMul,    // dst = mul(s1, s2): MUL_CYC + 1 clocks, MUL_K bits of s2 a clock; sh = 1:
            // MUL_CYC clocks, the write on the next multiply's first clock (which
            // must not read dst)
-  kSqrt,   // starts the divider on sqrt(s1) (SQRT_CYC clocks, two root bits a clock): one clock
-  kRecip,  // starts the divider on recip(s1) (RECIP_CYC clocks, two quotient bits a clock): one clock
+  kSqrt,   // one clock: starts the divider on sqrt(s1) (SQRT_CYC clocks, two bits a clock)
+  kRecip,  // one clock: starts the divider on recip(s1) (RECIP_CYC clocks, two bits a clock)
   kAdd,    // dst = s1 + s2: one clock; sh = 1: the cycle's last, go to kCycleStart
   kRsb,    // dst = 3.0 - (s1 << sh): one clock
   kPos,    // lattice position of axis dst = pos(s1, s2): as kMul
@@ -131,9 +131,9 @@ class LogStepper {
   static_assert(MUL_K >= 1 && MUL_K <= W, "MUL_K out of range");
   static_assert(SEG_W >= 2 && SEG_W <= POS_W && POS_W <= 62, "SEG_W/POS_W out of range");
   static constexpr int MUL_CYC = (W + MUL_K - 1) / MUL_K;  // digits of a multiply
-  static constexpr int SQRT_BITS = (W + FRAC_W + 1) / 2;  // root bits of sqrt(x 2^F)
-  static constexpr int RECIP_BITS = FRAC_W + 1;           // quotient bits of 2^2F / x
-  static constexpr int SQRT_CYC = (SQRT_BITS + 1) / 2;    // two bits a clock
+  static constexpr int SQRT_BITS = (W + FRAC_W + 1) / 2;   // root bits of sqrt(x 2^F)
+  static constexpr int RECIP_BITS = FRAC_W + 1;            // quotient bits of 2^2F / x
+  static constexpr int SQRT_CYC = (SQRT_BITS + 1) / 2;     // two bits a clock
   static constexpr int RECIP_CYC = (RECIP_BITS + 1) / 2;
   static constexpr int RECIP_PAD = 2 * RECIP_CYC - RECIP_BITS;  // a leading zero quotient bit
   static_assert(SQRT_BITS + 3 <= 64, "the square root's remainder needs SQRT_BITS + 3 bits");
@@ -453,14 +453,14 @@ class LogStepper {
   }
 
   // Coarse engine.
-  bool act_q_;                     // a curve is being computed
-  sc_dt::sc_uint<6> pc_q_;         // the program entry running
-  sc_dt::sc_uint<CNT_W> cnt_q_;    // clock within a multi-clock operation
-  word_t reg_q_[log_uop::kRegs];   // registers 2.. (0 and 1 are constants)
-  prod_t acc_q_, pp_q_;            // the multiplier's accumulator and registered partial product
-  bool wb_q_, wb_pos_q_;           // a handed-over multiply's write pending, to a lattice position
-  unsigned char wb_dst_q_;         // its register or axis
-  bool even_q_;                    // an even point waits for its positions and EMIT
+  bool act_q_;                    // a curve is being computed
+  sc_dt::sc_uint<6> pc_q_;        // the program entry running
+  sc_dt::sc_uint<CNT_W> cnt_q_;   // clock within a multi-clock operation
+  word_t reg_q_[log_uop::kRegs];  // registers 2.. (0 and 1 are constants)
+  prod_t acc_q_, pp_q_;           // the multiplier's accumulator and registered partial product
+  bool wb_q_, wb_pos_q_;          // a handed-over multiply's write pending, to a lattice position
+  unsigned char wb_dst_q_;        // its register or axis
+  bool even_q_;                   // an even point waits for its positions and EMIT
   // Divider: running, square root (else reciprocal), its clock, its operand,
   // remainder and root/quotient so far.
   bool dv_act_q_, dv_sqrt_q_;

@@ -348,7 +348,12 @@ module log_stepper #(
     digit_d = '0;
     for (int j = 0; j < MulCyc; j++) begin
       place_d[j] = cnt_d == 7'(j);
-      digit_d    = digit_d | ({MUL_K{place_d[j]}} & MUL_K'(s2_d >> (MUL_K * j)));
+      // Digit 0 (a new operation's first) from the next operand, the write
+      // port's value bypassed; the others from the operand register, which
+      // holds the same value while the operation runs (nothing writes an
+      // operand of a running operation): the multiplier's carry chain then
+      // feeds only digit 0.
+      digit_d    = digit_d | ({MUL_K{place_d[j]}} & MUL_K'(((j == 0) ? s2_d : s2_q) >> (MUL_K * j)));
     end
     pp_d = '0;
     for (int j = 0; j < MulCyc; j++) begin
