@@ -5,6 +5,7 @@
 // the fine stage waits, and the command line.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -104,8 +105,9 @@ Emissions<Cfg> emissions(const A::Command& cmd, uint64_t feed) {
 }
 
 // With segments far shorter than a point's computation the coarse engine
-// sets the pace: one odd+even cycle every 25 (MUL_CYC + 1) + SQRT_CYC +
-// 2 (FRAC_W + 1) + 13 clocks (rtl/log_stepper.sv), and the fine stage waits.
+// sets the pace: one odd+even cycle every 25 M + 1 + max(1, SQRT_CYC + 2 -
+// 2 M) + max(1, RECIP_CYC + 1 - 2 M) + max(1, RECIP_CYC - 1 - 7 M) clocks,
+// M = MUL_CYC + 1 (rtl/log_stepper.sv), and the fine stage waits.
 TYPED_TEST(LogStepperLockstep, CoarseEngineTakesTheDocumentedClocksPerCycle) {
   using Core = hls::LogStepper<TypeParam>;
   const VariantSpec l = V<TypeParam>::spec();
@@ -117,8 +119,10 @@ TYPED_TEST(LogStepperLockstep, CoarseEngineTakesTheDocumentedClocksPerCycle) {
   const A::Command cmd = A::make_command(p, tiny, l, "test");
   const auto e = emissions<TypeParam>(cmd, l.full_feed());
   ASSERT_EQ(e.clocks.size(), cmd.points);
-  const uint64_t cycle =
-      25 * (Core::MUL_CYC + 1) + Core::SQRT_CYC + 2 * (TypeParam::FRAC_W + 1) + 13;
+  constexpr int64_t m = Core::MUL_CYC + 1;
+  const auto wait = [](int64_t c) { return static_cast<uint64_t>(std::max<int64_t>(1, c)); };
+  const uint64_t cycle = 25 * m + 1 + wait(Core::SQRT_CYC + 2 - 2 * m) +
+                         wait(Core::RECIP_CYC + 1 - 2 * m) + wait(Core::RECIP_CYC - 1 - 7 * m);
   for (size_t k = 3; k < e.clocks.size(); k += 2)
     EXPECT_EQ(e.clocks[k] - e.clocks[k - 2], cycle) << "point " << k + 1;
   EXPECT_GT(e.underrun, 0u) << "1-step segments at full feed outrun the coarse engine";
