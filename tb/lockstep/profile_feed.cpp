@@ -73,11 +73,21 @@ ProfileFeed::ProfileFeed(uint64_t q, unsigned len, std::function<bool(ProfileWor
                               "-bit feed words");
 }
 
+template <class Fn>
+auto ProfileFeed::visit(Fn&& fn) const {
+  switch (feed_w_) {
+#define HWINTERP_PROFILE_VISIT(W) \
+  case W:                         \
+    return fn(*f_->f##W);
+    HWINTERP_PROFILE_FEED_WS(HWINTERP_PROFILE_VISIT)
+#undef HWINTERP_PROFILE_VISIT
+  }
+  throw std::logic_error("feed profile: no build with " + std::to_string(feed_w_) +
+                         "-bit feed words");
+}
+
 ProfileFeed::~ProfileFeed() {
-#define HWINTERP_PROFILE_FINAL(W) \
-  if (f_->f##W) f_->f##W->rtl->final();
-  HWINTERP_PROFILE_FEED_WS(HWINTERP_PROFILE_FINAL)
-#undef HWINTERP_PROFILE_FINAL
+  visit([](auto& f) { return (f.rtl->final(), 0); });
   f_.reset();
   Verilated::threadContextp(Verilated::defaultContextp());
 }
@@ -148,27 +158,13 @@ void ProfileFeed::override_schedule(std::vector<OverrideStep> steps) {
 }
 
 bool ProfileFeed::busy() const {
-  switch (feed_w_) {
-#define HWINTERP_PROFILE_BUSY(W) \
-  case W:                        \
-    return f_->f##W->hls.busy();
-    HWINTERP_PROFILE_FEED_WS(HWINTERP_PROFILE_BUSY)
-#undef HWINTERP_PROFILE_BUSY
-  }
-  return false;
+  return visit([](auto& f) { return f.hls.busy(); });
 }
 
 bool ProfileFeed::stranded() const { return rest_clocks_ > (uint64_t(4) << kProfileTickW); }
 
 uint64_t ProfileFeed::clock() {
-  switch (feed_w_) {
-#define HWINTERP_PROFILE_STEP(W) \
-  case W:                        \
-    return step(*f_->f##W);
-    HWINTERP_PROFILE_FEED_WS(HWINTERP_PROFILE_STEP)
-#undef HWINTERP_PROFILE_STEP
-  }
-  return 0;
+  return visit([this](auto& f) { return step(f); });
 }
 
 template <int W>

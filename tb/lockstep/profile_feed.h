@@ -113,6 +113,9 @@ class ProfileFeed {
   struct FacesOf;
   template <int W>
   uint64_t step(FacesOf<W>& f);
+  // fn(the faces at feed_w_): the one switch over the builds (profile_feed.cpp).
+  template <class Fn>
+  auto visit(Fn&& fn) const;
   std::unique_ptr<Faces> f_;
   int feed_w_ = kProfileFeedW;
   std::function<bool(ProfileWords&)> next_;
