@@ -44,8 +44,9 @@
 // its last operation, at a speed of at most a few levels.
 //
 // Junctions. The speed lags the level: when a move's distance runs out (in
-// the trapezoid's terms) the moving sum still owes it e L (L - 1) / 2
-// level-ticks of distance, at most floor(L / 2) ticks at level e. So after
+// the trapezoid's terms) the moving sum still owes it e (L - 1) / 2
+// level-ticks of distance ((L - 1) / 2 ticks at level e: the engine takes
+// the move's last operation within floor(L / 2) ticks). So after
 // a junction (a move ending at e > 0 while moving, the next one starting)
 // the level may not rise for floor(L / 2) ticks (jhold_): every level the
 // moving sum holds until the engine has taken the ended move's last
@@ -295,9 +296,9 @@ class FeedProfile {
   uint64_t q_ = 0, v_ = 0, acc_ = 0, feed_ = 0;
   uint32_t len_ = 1, c_ = 0, t_ = 0, idx_ = 0, up_age_ = 0, quiet_ = 0;
   // Ticks after a junction on which the level may not rise: the moving sum
-  // still owes the ended move e L (L - 1) / 2 level-ticks of its distance
-  // at level e, at most floor(L / 2) ticks of it; so the engine takes that
-  // move's last operation on one of them, with every level it sums at e.
+  // still owes the ended move e (L - 1) / 2 level-ticks of its distance,
+  // (L - 1) / 2 ticks at level e; so the engine takes that move's last
+  // operation within floor(L / 2) ticks, with every level it sums at e.
   uint32_t jhold_ = 0;
   unsigned ovr_ = kOvrOne;  // the override word of the next boundary
   r_t r_ = 0;
