@@ -32,15 +32,27 @@
 // fits in R). cost(c') is the distance of this tick at c' plus the forced
 // hold w' ticks at c' (the reversal rule: after a +1, L ticks before a -1)
 // plus the braking B(c', e) = sum_{j=e}^{c'-1} j from c' down to the move's
-// end level e, all times q*L. It is an upper bound of a legal continuation,
-// and the continuation of a feasible choice is feasible on the next tick, so
-// once feasible the move stays feasible: the speed is at level e when R runs
-// out, never above (proof: tests/hls/feed_profile_test.cpp checks it on
-// random moves; the argument is in docs/profile.md). The move ends on the tick
+// end level e plus e held L - 1 ticks (the settle), all times q*L. It is an
+// upper bound of a legal continuation, and the continuation of a feasible
+// choice is feasible on the next tick, so once feasible the move stays
+// feasible: the level is at e when R runs out, never above, and has been at
+// e for the last L ticks (tests/hls/feed_profile_test.cpp checks it on random
+// moves; the argument is in docs/profile.md). The move ends on the tick
 // R <= 0; its overshoot (< one tick at level e) is carried into the next move
 // while moving, dropped at rest. At the program's end the block travels at
 // least the ops given (distance >= N), so an engine behind it always reaches
 // its last operation, at a speed of at most a few levels.
+//
+// Junctions. The speed lags the level: when a move's distance runs out (in
+// the trapezoid's terms) the moving sum still owes it e L (L - 1) / 2
+// level-ticks of distance, at most floor(L / 2) ticks at level e. So after
+// a junction (a move ending at e > 0 while moving, the next one starting)
+// the level may not rise for floor(L / 2) ticks (jhold_): every level the
+// moving sum holds until the engine has taken the ended move's last
+// operation is e or lower, and the speed there is at most q L e, the end
+// speed (FeedProfile.JunctionsArePassedAtMostAtTheirEndSpeed). A move to
+// rest (e = 0) has neither the settle nor the hold: the harness's exact-stop
+// rule (tb/lockstep/profile_feed.h) waits for rest instead.
 //
 // Commands: valid/ready, one waiting (`pending`) and one next; at a tick
 // boundary next becomes current when the current move is done, then pending
@@ -145,6 +157,7 @@ class FeedProfile {
     up_age_ = (4u << LEN_W) - 1;  // as the RTL's all-ones reset: above kMaxLen, "long ago"
     quiet_ = (4u << LEN_W) - 1;
     r_ = 0;
+    jhold_ = 0;
     ends_ = ends_above_ = 0;
     ovr_ = kOvrOne;
     cur_ = next_ = pend_ = false;
@@ -213,6 +226,10 @@ class FeedProfile {
     // second boundary after it was taken at the earliest, and the RTL has a
     // whole tick to compute with it.
     const bool moving = c_ != 0 || v_ != 0;
+    // A junction: the move in progress ends at level e > 0 and the next one
+    // starts on this tick (see jhold_ below).
+    const bool junction = cur_ && r_ <= 0 && next_ && moving && cur_cmd_.end.to_uint() > 0;
+    if (junction) jhold_ = len_ / 2;
     if ((!cur_ || r_ <= 0) && next_) {
       const r_t add = r_t(next_cmd_.ops.to_uint64()) << kRShift;
       r_ = (cur_ && moving) ? r_t(r_ + add) : add;
@@ -238,21 +255,22 @@ class FeedProfile {
     // than level 1 while distance is left: it ends at level 1 with less than
     // one level-tick overshot, rather than at 0 with distance still to go.
     const uint32_t floor = end > 0 ? end : (free ? 0 : 1);
-    // The end level is reached early by e*(L-1)/2 level-ticks, and held: then
-    // the moving sum holds only level e by the move's last operation (its
-    // output lags the trapezoid by that much distance), so the speed there is
-    // at most the end speed.
-    const cost_t settle = cost_t(q_) * cost_t(len_) * cost_t(end) * cost_t(len_ - 1);
+    // The end level is reached at least L - 1 ticks before the distance runs
+    // out, and held: the L levels of the moving sum are all e on the move's
+    // last tick (e (L - 1) level-ticks, doubled as fits() doubles).
+    const cost_t settle = cost_t(q_) * cost_t(len_) * cost_t(end) * cost_t(2 * (len_ - 1));
     const auto fits = [&](uint32_t c, uint32_t w) {
       return free || cost_t(2 * cost(c, w, end) + settle) <= cost_t(2 * r_);
     };
     uint32_t c = c_;
-    if (c_ < target && up_ok && c_ + 1 < (1u << LVL_W) && (fits(c_ + 1, len_) || c_ == 0)) {
+    if (c_ < target && up_ok && jhold_ == 0 && c_ + 1 < (1u << LVL_W) &&
+        (fits(c_ + 1, len_) || c_ == 0)) {
       c = c_ + 1;  // from rest, a move too short to fit even one level still starts (it overshoots)
     } else if (c_ > 0 && down_ok && (c_ > target || (c_ > floor && !fits(c_, w_hold)))) {
       c = c_ - 1;
     }
     const int dc = int(c) - int(c_);
+    if (jhold_ > 0) --jhold_;
     if (cur_) {
       r_ = r_ - r_t(cost_t(q_) * cost_t(len_) * cost_t(c));
       // The move's distance ran out on this tick: its level is at most its
@@ -276,6 +294,11 @@ class FeedProfile {
   std::vector<int8_t> ring_dc_;    // dc of the last L ticks
   uint64_t q_ = 0, v_ = 0, acc_ = 0, feed_ = 0;
   uint32_t len_ = 1, c_ = 0, t_ = 0, idx_ = 0, up_age_ = 0, quiet_ = 0;
+  // Ticks after a junction on which the level may not rise: the moving sum
+  // still owes the ended move e L (L - 1) / 2 level-ticks of its distance
+  // at level e, at most floor(L / 2) ticks of it; so the engine takes that
+  // move's last operation on one of them, with every level it sums at e.
+  uint32_t jhold_ = 0;
   unsigned ovr_ = kOvrOne;  // the override word of the next boundary
   r_t r_ = 0;
   uint64_t ends_ = 0, ends_above_ = 0;

@@ -59,6 +59,12 @@ uint32_t profile_level(const ProfileRegisters& regs, double speed) {
   return static_cast<uint32_t>(std::min<double>(l, regs.max_level));
 }
 
+double profile_entry_cost(double e, double next_end, unsigned len) {
+  const double n = next_end, l = len;
+  const double brake = e > n ? (e + n - 1) * (e - n) / 2 : 0;
+  return e * (1 + l) + brake + n * (l - 1);
+}
+
 unsigned override_word(double percent) {
   if (!(percent >= 0 && percent <= 200)) {
     std::ostringstream os;

@@ -45,6 +45,14 @@ ProfileRegisters profile_registers(const PathLimits& limits, const ProfileBuild&
 // The level of a speed (ops/s), rounded down, capped at max_level.
 uint32_t profile_level(const ProfileRegisters& regs, double speed);
 
+// The distance, in level-ticks (one tick at level 1; a tick at level c
+// travels c), the block charges a move entered at level `e` whose end level
+// is `next_end` (hls/feed_profile.h's cost): a tick at e with the hold the
+// reversal rule may force (L ticks), the brake from e to next_end, and
+// next_end held L - 1 ticks before the move's distance runs out. A planner
+// keeps it within the move's length so that the move ends at its end level.
+double profile_entry_cost(double e, double next_end, unsigned len);
+
 // The feed override's word for `percent` (0..200): round(percent * 128 / 100),
 // the block's ovr_i (hls/feed_profile.h: factor word / 128, 1/128 = 0.78 %
 // resolution). Throws std::invalid_argument naming the value outside 0..200.

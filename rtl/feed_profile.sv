@@ -32,14 +32,15 @@
 //   R     ~R = ~rp + (q L) c_new   (R is held inverted: ~(a - b) = ~a + b)
 //   QC    q c_new, written to the ring word of the boundary just passed
 //   QL    q L
-//   X0    e (L - 1) + (c + e - 1)(c - e) [c > e] + c * 2 (1 + w)
+//   X0    2 e (L - 1) + (c + e - 1)(c - e) [c > e] + c * 2 (1 + w)
 //   X1    X0 + c * 2 (L - w + [c >= e]) + 2 (L + 1)
 //   F1 F0 fits: (q L) X <= 2 rp, as (q L) X + ~(2 rp) < 2^RW (no overflow)
 //   GO    the next level for hold low and high (registers)
 //   V0 V1 v + q c' - q c_old for each of them
-// The MAC's accumulator is cut in two halves with the carry between them
-// registered (added on the next clock, and once more after the last bit), so
-// no carry chain is longer than about RW / 2. The last L levels live in a
+// The MAC's accumulator is cut in three parts with the carries between them
+// registered (each added into the next part on the next clock; two clocks
+// more after the last bit let them ripple through), so no carry chain is
+// longer than about RW / 3. The last L levels live in a
 // block RAM (prim_ram_1r1w); words not written since reset read as 0 (a
 // high-water mark), as the HLS face's ring starts at 0.
 module feed_profile #(
@@ -83,10 +84,12 @@ module feed_profile #(
   localparam int PW0 = (RW + 1 > QL_W) ? RW + 1 : QL_W;
   localparam int PW1 = (PW0 > VW + 1) ? PW0 : VW + 1;
   localparam int PW = (PW1 > XW) ? PW1 : XW;
-  localparam int PLW = PW / 2;                     // its low half
-  localparam int PHW = PW - PLW;
+  localparam int PLW = PW / 3;                     // its low part
+  localparam int PMW = PW / 3;                     // its middle part
+  localparam int PHW = PW - PLW - PMW;             // its high part
+  localparam int PMH = PLW + PMW;                  // the high part's first bit
   // clocks from the boundary to the last result, with a margin (see the header)
-  localparam int SEQ_CLOCKS = 5 * LVL_W + 4 * LEN_W + 2 * XW + 47;
+  localparam int SEQ_CLOCKS = 5 * LVL_W + 4 * LEN_W + 2 * XW + 62;
 
 `ifndef __ICARUS__
   if (FEED_W < 1 || SPD_W <= FEED_W || SPD_W > 62) begin : g_bad_spd_w
@@ -117,6 +120,9 @@ module feed_profile #(
   logic [LEN_W:0]    hw_q, hw_d;               // ring words written since reset
   logic [AGE_W-1:0]  up_age_q, up_age_d;       // ticks since the last +1 (saturates at MAXLEN + 1)
   logic [AGE_W-1:0]  quiet_q, quiet_d;         // ticks since the last step of c (saturates)
+  logic [LEN_W-1:0]  jh_q, jh_d;               // boundaries after a junction without a +1 (to come)
+  logic [LEN_W-1:0]  jhn_q, jhn_d;             // jh_q as the next boundary will see it
+  logic              jblk_q, jblk_d;           // the next boundary may not step up (a junction's hold)
   logic [RW-1:0]     nr_q, nr_d;               // ~R: the distance left of the current move, inverted
   logic [RW-1:0]     nrp_q, nrp_d;             // ~R after the next boundary's promotion
   logic              cur_q, cur_d, next_q, next_d, pend_q, pend_d;
@@ -152,16 +158,18 @@ module feed_profile #(
   logic [4:0]        lop_q, lop_d;
   logic              cap_q, cap_d;             // ph_q's results are ready: capture them
   logic              run_q, run_d;             // the MAC is stepping (cnt_q != 0)
-  logic [5:0]        cnt_q, cnt_d;             // clocks left: B's bits, then one for the last carry
+  logic [5:0]        cnt_q, cnt_d;             // clocks left: B's bits, then two for the last carries
   logic [PW-1:0]     ma_q, ma_d;               // A, shifted left a bit a clock
   logic              ma_over_q, ma_over_d;     // A has shifted a one out of its top
   logic [XW-1:0]     mb_q, mb_d;               // B, shifted right a bit a clock
-  logic [PLW-1:0]    pl_q, pl_d;               // P, low half
-  logic [PHW-1:0]    ph_hi_q, ph_hi_d;         // P, high half
-  logic              pc_q, pc_d;               // the carry from the low half, due in the high half
+  logic [PLW-1:0]    pl_q, pl_d;               // P, low part
+  logic [PMW-1:0]    pm_q, pm_d;               // P, middle part
+  logic [PHW-1:0]    ph_hi_q, ph_hi_d;         // P, high part
+  logic              pc_q, pc_d;               // the carry from the low part, due in the middle
+  logic              pcm_q, pcm_d;             // the carry from the middle part, due in the high
   logic              ci_q, ci_d;               // a carry into bit 0 on the first bit
   logic              pover_q, pover_d;         // P has overflowed 2^PW (before the last clock)
-  logic              pco_q, pco_d;             // the high half's carry out on the last clock
+  logic              pco_q, pco_d;             // the high part's carry out on the last clock
 
   localparam logic [4:0] OpIdle = 5'd0, OpR = 5'd1, OpQc = 5'd2, OpQl = 5'd3, OpEl = 5'd4,
                          OpBrk = 5'd5, OpCw = 5'd6, OpD1 = 5'd7, OpD2 = 5'd8, OpF1 = 5'd9,
@@ -172,7 +180,7 @@ module feed_profile #(
   logic              ram_we, ram_re;
   logic [SPD_W+2:0]  ram_wdata, ram_rdata;
   logic [PW-1:0]     p_full;
-  assign p_full = {ph_hi_q, pl_q};
+  assign p_full = {ph_hi_q, pm_q, pl_q};
   prim_ram_1r1w #(.WIDTH(SPD_W + 3), .DEPTH(MAXLEN)) u_ring (
     .clk_i   (clk_i),
     .we_i    (ram_we),
@@ -184,17 +192,30 @@ module feed_profile #(
   );
   assign ram_wdata = {upb_q, dnb_q, p_full[VW:1]};
 
+  // The word read, registered once more in the fabric (block RAM's clock to
+  // out is long); read at QL's capture, it is first used at GO2's, clocks later.
+  logic [SPD_W+2:0] rdq_q, rdq_d;
   logic rd_up, rd_dn;
   logic [VW-1:0] qc_old;
-  assign rd_up  = rvalid_q && ram_rdata[SPD_W+2];
-  assign rd_dn  = rvalid_q && ram_rdata[SPD_W+1];
-  assign qc_old = rvalid_q ? ram_rdata[SPD_W:0] : '0;
+  assign rdq_d  = ram_rdata;
+  assign rd_up  = rvalid_q && rdq_q[SPD_W+2];
+  assign rd_dn  = rvalid_q && rdq_q[SPD_W+1];
+  assign qc_old = rvalid_q ? rdq_q[SPD_W:0] : '0;
 
-  logic busy, rest, boundary;
-  assign busy     = cur_q || next_q || pend_q || (v_q != '0) || ({1'b0, quiet_q} <= {2'b0, len_q});
-  assign rest     = !busy;
+  // busy: moves queued, or moving (v != 0), or settling (a step of the
+  // level within the last L ticks: quiet <= L). A register, busy_q, computed
+  // from the next state (rest enables every register of q and L, so it
+  // comes from a flip-flop): "moving" from a flag of its own (vnz_q, with
+  // vn0nz_q and vn1nz_q beside the two candidate speeds), "settling" from
+  // the saturating increment of quiet_q computed ahead (qinc_q). The formal
+  // file asserts that all of them equal what they stand for (a_busy, a_vnz).
+  logic busy_q, busy_d, settle_d, rest, boundary;
+  logic vnz_q, vnz_d, vn0nz_q, vn0nz_d, vn1nz_q, vn1nz_d;
+  logic [AGE_W-1:0] qinc_q, qinc_d;            // quiet_q + 1, saturated (read at boundaries)
+  assign rest     = !busy_q;
   assign boundary = bnd_q;
   assign bnd_d    = (t_q == '1);
+  assign qinc_d   = ({1'b0, quiet_q} > (AGE_W + 1)'(MAXLEN)) ? quiet_q : quiet_q + AGE_W'(1);
 
   // ---- the next boundary's promotion, from R (valid after OpR) ----
   // (r_done and moving are registers, valid from the second clock of OpQc,
@@ -205,21 +226,36 @@ module feed_profile #(
   assign r_done_d = !nr_q[RW-1] || (nr_q == '1);   // R <= 0
   assign r_done   = r_done_q;
   assign promote = (!cur_q || r_done) && next_q;
-  assign moving_d = (c_q != '0) || (v_q != '0);
+  assign moving_d = (c_q != '0) || vnz_q;
   assign moving   = moving_q;
   assign ops_r   = RHW'(next_ops_q);
   assign end_p_d = promote_q ? next_end_q : cur_end_q;
   assign end_p   = end_p_q;
+
+  // The junction's hold (hls/feed_profile.h, jhold_): when the next boundary
+  // ends a move at level e > 0 while moving and starts the next, that
+  // boundary and the floor(L / 2) - 1 after it may not step up. (promote_q
+  // is valid from OpQc on; the first to read jblk_q is OpGo2. jhn_q and
+  // jblk_q are registers of what is fixed for the rest of the tick.)
+  logic junction;
+  assign junction = promote_q && cur_q && moving_q && (cur_end_q != '0);
+  assign jhn_d    = junction ? len_q[LEN_W:1] : jh_q;
+  assign jblk_d   = (jhn_q != '0);
 
   // w_hold: ticks c must still hold before a -1 may follow the last +1
   // (The small operands are registers: their inputs are fixed for the tick
   // from OpQc on, and the first to use them is OpEl.)
   logic             aged;
   logic [LEN_W+1:0] w1x2_d, lw1x2_d, w1x2_q, lw1x2_q;
+  // c > e and c >= e, registered a clock before the sums that take them
+  // (end_p_q is known a clock after QC; the first sum read is at BRK)
+  logic             cgt_q, cgt_d, cge_q, cge_d;
+  assign cgt_d   = c_q > end_p;
+  assign cge_d   = c_q >= end_p;
   assign aged  = ({1'b0, up_age_q} >= {2'b0, len_q});
   // 2 (1 + w) and 2 (L - w + [c >= e]); L - w is L when aged, else up_age
   assign w1x2_d  = aged ? (LEN_W + 2)'(2) : {len_q - up_age_q[LEN_W:0] + (LEN_W + 1)'(1), 1'b0};
-  assign lw1x2_d = {(aged ? len_q : up_age_q[LEN_W:0]) + (LEN_W + 1)'(c_q >= end_p), 1'b0};
+  assign lw1x2_d = {(aged ? len_q : up_age_q[LEN_W:0]) + (LEN_W + 1)'(cge_q), 1'b0};
 
   // ---- the next boundary's choices for hold_i low (0) and high (1) ----
   // Two clocks: the compares (registered), then the choices. hold_i high:
@@ -242,7 +278,7 @@ module feed_profile #(
   logic [LVL_W-1:0] cp1_q, cp1_d, cm1_q, cm1_d;
   logic [1:0]       go_up_c, go_dn_c;
   logic [LVL_W-1:0] cn0, cn1;                  // the level after the boundary (for OpV0a, OpV1a)
-  assign go_up_c[0] = lt_q && !rd_dn && !cmax_q && (f1_q || cz_q);
+  assign go_up_c[0] = lt_q && !rd_dn && !cmax_q && (f1_q || cz_q) && !jblk_q;
   assign go_dn_c[0] = !go_up_c[0] && !cz_q && !rd_up && (gt_q || (gtf_q && !f0_q));
   assign go_up_c[1] = 1'b0;
   assign go_dn_c[1] = !cz_q && !rd_up;
@@ -258,7 +294,7 @@ module feed_profile #(
   logic [5:0]      lk;
   logic [LVL_W-1:0] end_p_q;                  // the end level after the promotion
   logic [LVL_W:0]  cpe_d, cpe_q;                 // (c + e - 1) when c > e, else 0
-  assign cpe_d = (c_q > end_p) ? {1'b0, c_q} + {1'b0, end_p} - (LVL_W + 1)'(1) : '0;
+  assign cpe_d = cgt_q ? {1'b0, c_q} + {1'b0, end_p} - (LVL_W + 1)'(1) : '0;
   logic [LEN_W:0]  lm1_d, lm1_q;                 // L - 1
   logic [LEN_W:0]  lp1_d, lp1_q;               // L + 1 (L < 2^(LEN_W+1) - 1)
   logic [LVL_W-1:0] cme_d, cme_q;                // c - e (used when c > e)
@@ -294,7 +330,7 @@ module feed_profile #(
       OpR:   begin la = curb_q ? PW'(ql_q) : '0; lb = XW'(c2); lp = PW'(nrp1); lk = 6'(LVL_W + 1); end
       OpQc:  begin la = PW'(q_q);   lb = XW'(c2);                               lk = 6'(LVL_W + 1); end
       OpQl:  begin la = PW'(q_q);   lb = XW'(len_q);                            lk = 6'(LEN_W + 1); end
-      OpEl:  begin la = PW'(end_p); lb = XW'(lm1_q);                              lk = 6'(LEN_W + 1); end
+      OpEl:  begin la = PW'(end_p); lb = XW'({lm1_q, 1'b0});                      lk = 6'(LEN_W + 2); end
       OpBrk: begin la = PW'(cpe_q); lb = XW'(cme_q);          lp = p_full;       lk = 6'(LVL_W); end
       OpCw:  begin la = PW'(c_q);   lb = XW'(w1x2_q);         lp = p_full;       lk = 6'(LEN_W + 2); end
       OpD1:  begin la = PW'(c_q);   lb = XW'(lw1x2_q);         lp = p_full;       lk = 6'(LEN_W + 2); end
@@ -311,11 +347,13 @@ module feed_profile #(
   // ---- the MAC and the sequencer ----
   logic            mbit;
   logic [PLW:0]    sum_lo;
+  logic [PMW:0]    sum_mid;
   logic [PHW:0]    sum_hi;
-  // B holds no bits above its count: it is 0 on the last clock (the flush)
+  // B holds no bits above its count: it is 0 on the last two clocks (the flush)
   assign mbit   = mb_q[0];
   assign sum_lo = {1'b0, pl_q} + {1'b0, mbit ? ma_q[PLW-1:0] : PLW'(0)} + (PLW + 1)'(ci_q);
-  assign sum_hi = {1'b0, ph_hi_q} + {1'b0, mbit ? ma_q[PW-1:PLW] : PHW'(0)} + (PHW + 1)'(pc_q);
+  assign sum_mid = {1'b0, pm_q} + {1'b0, mbit ? ma_q[PMH-1:PLW] : PMW'(0)} + (PMW + 1)'(pc_q);
+  assign sum_hi = {1'b0, ph_hi_q} + {1'b0, mbit ? ma_q[PW-1:PMH] : PHW'(0)} + (PHW + 1)'(pcm_q);
 
   logic over_rw;  // (q L) X > 2 rp: the candidate does not fit
   // {~rp, 1} is 2^RW + ~(2 rp) when rp >= 0: it fits when P stays below 2^(RW + 1)
@@ -329,8 +367,10 @@ module feed_profile #(
     ma_over_d = ma_over_q;
     mb_d      = mb_q;
     pl_d      = pl_q;
+    pm_d      = pm_q;
     ph_hi_d   = ph_hi_q;
     pc_d      = pc_q;
+    pcm_d     = pcm_q;
     ci_d      = 1'b0;
     pover_d   = pover_q;
     pco_d     = pco_q;
@@ -355,12 +395,16 @@ module feed_profile #(
     gd_d      = gd_q;
     vn0_d     = vn0_q;
     vn1_d     = vn1_q;
+    vn0nz_d   = vn0nz_q;
+    vn1nz_d   = vn1nz_q;
     ram_we    = 1'b0;
     ram_re    = 1'b0;
     if (run_q) begin
-      // A bit of B (the last clock, with B empty: the last carry only).
+      // A bit of B (the last two clocks, with B empty: the last carries only).
       pl_d      = sum_lo[PLW-1:0];
       pc_d      = sum_lo[PLW];
+      pm_d      = sum_mid[PMW-1:0];
+      pcm_d     = sum_mid[PMW];
       ph_hi_d   = sum_hi[PHW-1:0];
       pco_d     = sum_hi[PHW];
       pover_d   = pover_q || pco_q || (mbit && ma_over_q);
@@ -401,8 +445,8 @@ module feed_profile #(
           gu_d = go_up_c;
           gd_d = go_dn_c;
         end
-        OpV0b: vn0_d = p_full[VW-1:0];
-        OpV1b: vn1_d = p_full[VW-1:0];
+        OpV0b: begin vn0_d = p_full[VW-1:0]; vn0nz_d = (p_full[VW-1:0] != '0); end
+        OpV1b: begin vn1_d = p_full[VW-1:0]; vn1nz_d = (p_full[VW-1:0] != '0); end
         default: ;
       endcase
       ph_d = nxt;
@@ -413,12 +457,14 @@ module feed_profile #(
       ma_over_d = 1'b0;
       mb_d      = lb;
       pl_d      = lp[PLW-1:0];
-      ph_hi_d   = lp[PW-1:PLW];
+      pm_d      = lp[PMH-1:PLW];
+      ph_hi_d   = lp[PW-1:PMH];
       pc_d      = 1'b0;
+      pcm_d     = 1'b0;
       ci_d      = lc;
       pover_d   = 1'b0;
       pco_d     = 1'b0;
-      cnt_d     = lk + 6'd1;
+      cnt_d     = lk + 6'd2;
       run_d     = 1'b1;
     end
   end
@@ -461,11 +507,13 @@ module feed_profile #(
     acc_d      = dsum[DROP-1:0];
     feed_d     = dsum[DROP] ? vhi1 : vhi;
     v_d        = v_q;
+    vnz_d      = vnz_q;
     c_d        = c_q;
     idx_d      = idx_q;
     hw_d       = hw_q;
     up_age_d   = up_age_q;
     quiet_d    = quiet_q;
+    jh_d       = jh_q;
     cur_d      = cur_q;
     next_d     = next_q;
     pend_d     = pend_q;
@@ -507,16 +555,17 @@ module feed_profile #(
       end
       c_d    = go_up ? c_q + LVL_W'(1) : (go_down ? c_q - LVL_W'(1) : c_q);
       v_d    = hold_i ? vn1_q : vn0_q;
+      vnz_d  = hold_i ? vn1nz_q : vn0nz_q;
       curb_d = curp_q;
       upb_d  = go_up;
       dnb_d  = go_down;
       idxb_d = idx_q;
       idx_d = ({1'b0, idx_q} + (LEN_W + 1)'(1) == len_q) ? '0 : idx_q + LEN_W'(1);
       if ({1'b0, idx_q} >= hw_q) hw_d = {1'b0, idx_q} + (LEN_W + 1)'(1);
+      jh_d     = jblk_q ? jhn_q - LEN_W'(1) : '0;
       up_age_d = go_up ? AGE_W'(1) :
                  (({1'b0, up_age_q} > (AGE_W + 1)'(MAXLEN)) ? up_age_q : up_age_q + AGE_W'(1));
-      quiet_d  = (go_up || go_down) ? AGE_W'(1) :
-                 (({1'b0, quiet_q} > (AGE_W + 1)'(MAXLEN)) ? quiet_q : quiet_q + AGE_W'(1));
+      quiet_d  = (go_up || go_down) ? AGE_W'(1) : qinc_q;
     end
     if (cmd_valid_i && !pend_q) begin
       pend_d     = 1'b1;
@@ -533,9 +582,16 @@ module feed_profile #(
     end
   end
 
+  // quiet_d <= len_d, with a step of the level (quiet_d = 1 <= L) apart
+  assign settle_d = (boundary && (go_up || go_down)) ||
+                    ({1'b0, boundary ? qinc_q : quiet_q} <= {2'b0, len_d});
+  assign busy_d   = cur_d || next_d || pend_d || vnz_d || settle_d;
+
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       cpe_q   <= '0;
+      cgt_q   <= 1'b0;
+      cge_q   <= 1'b0;
       end_p_q <= '0;
       r_done_q <= 1'b0;
       moving_q <= 1'b0;
@@ -556,6 +612,8 @@ module feed_profile #(
       pend_top_q <= '0;
     end else begin
       cpe_q   <= cpe_d;
+      cgt_q   <= cgt_d;
+      cge_q   <= cge_d;
       end_p_q <= end_p_d;
       r_done_q <= r_done_d;
       moving_q <= moving_d;
@@ -581,6 +639,11 @@ module feed_profile #(
     if (!rst_ni) begin
       t_q        <= '0;
       bnd_q      <= 1'b1;
+      busy_q     <= 1'b0;
+      qinc_q     <= '1;
+      vnz_q      <= 1'b0;
+      vn0nz_q    <= 1'b0;
+      vn1nz_q    <= 1'b0;
       v_q        <= '0;
       acc_q      <= '0;
       feed_q     <= '0;
@@ -589,6 +652,9 @@ module feed_profile #(
       hw_q       <= '0;
       up_age_q   <= '1;  // any count above MAXLEN is "long ago"; it stays there
       quiet_q    <= '1;
+      jh_q       <= '0;
+      jhn_q      <= '0;
+      jblk_q     <= 1'b0;
       nr_q       <= '1;  // R = 0
       nrp_q      <= '1;
       cur_q      <= 1'b0;
@@ -628,6 +694,7 @@ module feed_profile #(
       fits0_q    <= 1'b0;
       fits1_q    <= 1'b0;
       rvalid_q   <= 1'b0;
+      rdq_q      <= '0;
       ph_q       <= '0;  // OpIdle
       load_q     <= 1'b0;
       lop_q      <= '0;
@@ -638,14 +705,21 @@ module feed_profile #(
       ma_over_q  <= 1'b0;
       mb_q       <= '0;
       pl_q       <= '0;
+      pm_q       <= '0;
       ph_hi_q    <= '0;
       pc_q       <= 1'b0;
+      pcm_q      <= 1'b0;
       ci_q       <= 1'b0;
       pover_q    <= 1'b0;
       pco_q      <= 1'b0;
     end else begin
       t_q        <= t_d;
       bnd_q      <= bnd_d;
+      busy_q     <= busy_d;
+      qinc_q     <= qinc_d;
+      vnz_q      <= vnz_d;
+      vn0nz_q    <= vn0nz_d;
+      vn1nz_q    <= vn1nz_d;
       v_q        <= v_d;
       acc_q      <= acc_d;
       feed_q     <= feed_d;
@@ -654,6 +728,9 @@ module feed_profile #(
       hw_q       <= hw_d;
       up_age_q   <= up_age_d;
       quiet_q    <= quiet_d;
+      jh_q       <= jh_d;
+      jhn_q      <= jhn_d;
+      jblk_q     <= jblk_d;
       nr_q       <= nr_d;
       nrp_q      <= nrp_d;
       cur_q      <= cur_d;
@@ -693,6 +770,7 @@ module feed_profile #(
       fits0_q    <= fits0_d;
       fits1_q    <= fits1_d;
       rvalid_q   <= rvalid_d;
+      rdq_q      <= rdq_d;
       ph_q       <= ph_d;
       load_q     <= load_d;
       lop_q      <= lop_d;
@@ -703,8 +781,10 @@ module feed_profile #(
       ma_over_q  <= ma_over_d;
       mb_q       <= mb_d;
       pl_q       <= pl_d;
+      pm_q       <= pm_d;
       ph_hi_q    <= ph_hi_d;
       pc_q       <= pc_d;
+      pcm_q      <= pcm_d;
       ci_q       <= ci_d;
       pover_q    <= pover_d;
       pco_q      <= pco_d;
@@ -715,5 +795,5 @@ module feed_profile #(
   assign feed_o      = feed_q;
   assign level_o     = c_q;
   assign speed_o     = v_q;
-  assign busy_o      = busy;
+  assign busy_o      = busy_q;
 endmodule

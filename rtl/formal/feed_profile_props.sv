@@ -14,6 +14,13 @@
 //   a_ready   cmd_ready_o is low exactly while a move waits in the pending
 //             slot, and busy_o is high while a move is pending, next or
 //             current, or the speed is not 0;
+//   a_vnz     the block's flags "speed not 0" and "candidate speed not 0"
+//             equal the ORs of those registers (busy_o uses the flag);
+//   a_busy    busy_o (a register, computed from the next state) is exactly
+//             "a move pending, next or current, or the speed not 0, or a
+//             step of the level within the last L ticks" (a_qinc: the
+//             increment of quiet it reads at boundaries is computed ahead;
+//             a_bnd: the boundary flag is t = 0; a_len: 1 <= L <= 2^LEN_W);
 //   a_take    a move taken (valid and ready) is in the pending slot on the
 //             next clock, with its fields (its cap: cmd_max_i, or the target if 0);
 //   a_ovr     the override word in force is at most 256 (200 %) and changes
@@ -36,7 +43,9 @@
 // link: f_next_ops=dut.next_ops_q f_next_tgt=dut.next_tgt_q f_next_end=dut.next_end_q
 // link: f_cur_tgt=dut.cur_tgt_q f_cur_end=dut.cur_end_q f_gu1=dut.gu_q[1]
 // link: f_curp=dut.curp_q f_pend_top=dut.pend_top_q f_ovr=dut.ovr_q
-// SPD_W = 8, TICK_W = 7 (the sequencer needs 77 of its 128 clocks at these
+// link: f_vnz=dut.vnz_q f_vn0nz=dut.vn0nz_q f_vn1nz=dut.vn1nz_q f_vn0=dut.vn0_q f_vn1=dut.vn1_q
+// link: f_quiet=dut.quiet_q f_len=dut.len_q f_qinc=dut.qinc_q f_t=dut.t_q
+// SPD_W = 8, TICK_W = 7 (the sequencer needs 91 of its 128 clocks at these
 // widths), levels 0..3, moves of up to 3 operations, L up to 2.
 module feed_profile_props #(
   parameter int FEED_W = 2,
@@ -97,6 +106,11 @@ module feed_profile_props #(
   logic [LVL_W-1:0] f_pend_tgt, f_pend_end, f_next_tgt, f_next_end, f_cur_tgt, f_cur_end;
   logic [LVL_W-1:0] f_pend_top;
   logic [8:0]       f_ovr;
+  logic             f_vnz, f_vn0nz, f_vn1nz;
+  logic [LEN_W+1:0] f_quiet, f_qinc;
+  logic [LEN_W:0]   f_len;
+  logic [TICK_W-1:0] f_t;
+  logic [SPD_W:0]   f_vn0, f_vn1;
 
   // Their values and the inputs' on the clock before.
   logic             p_bnd, p_hold, p_take, p_pend, p_next, p_promote;
@@ -189,6 +203,14 @@ module feed_profile_props #(
                      (p_bnd && p_promote && f_cur && f_cur_tgt == p_next_tgt &&
                       f_cur_end == p_next_end));
     end
+    a_bnd: assert(f_bnd == (f_t == '0));
+    a_len: assert(f_len >= (LEN_W + 1)'(1) && f_len <= (LEN_W + 1)'(1 << LEN_W));
+    // the increment computed ahead: stale only on the clock after a boundary
+    if (!f_init) a_qinc: assert(p_bnd || f_qinc == (({1'b0, f_quiet} > (LEN_W + 3)'(1 << LEN_W)) ?
+                                                  f_quiet : f_quiet + (LEN_W + 2)'(1)));
+    a_busy: assert(busy == (f_pend || f_next || f_cur || speed != '0 ||
+                            {1'b0, f_quiet} <= {2'b0, f_len}));
+    a_vnz: assert(f_vnz == (speed != '0) && f_vn0nz == (f_vn0 != '0) && f_vn1nz == (f_vn1 != '0));
     a_ready: assert(cmd_ready == !f_pend && (!(f_pend || f_next || f_cur || speed != '0) || busy));
   end
 endmodule

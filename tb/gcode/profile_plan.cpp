@@ -72,15 +72,9 @@ ProfilePlanner::ProfilePlanner(const Machine& machine, int axes, const models::P
 }
 
 uint32_t ProfilePlanner::brake_level(uint64_t ops, uint32_t next_end) const {
-  // The block's cost in level-ticks (hls/feed_profile.h): enter at e, hold L
-  // ticks, brake to the next end level, settle there.
+  // The block's cost in level-ticks (models::profile_entry_cost).
   const double budget = static_cast<double>(ops) / (regs_.level_speed * tick_s_);
-  const double len = regs_.len;
-  const auto cost = [&](double e) {
-    const double n = next_end;
-    const double brake = e > n ? (e + n - 1) * (e - n) / 2 : 0;
-    return e * (1 + len) + brake + n * (len - 1) / 2;
-  };
+  const auto cost = [&](double e) { return models::profile_entry_cost(e, next_end, regs_.len); };
   uint32_t lo = 0, hi = regs_.max_level;
   while (lo < hi) {
     const uint32_t mid = lo + (hi - lo + 1) / 2;

@@ -184,14 +184,11 @@ TEST(FeedProfile, FeedHoldStopsWithinTheLimitsAndResumeFinishesTheMove) {
 // the block's own cost (as tb/gcode/profile_plan.cpp plans them): for these
 // the braking rule ends every move at or below its end level.
 void plan_ends(std::vector<Profile::Command>& moves, const models::ProfileRegisters& regs) {
-  const double len = regs.len;
   for (size_t m = moves.size() - 1; m-- > 0;) {
     const double n = moves[m + 1].end.to_uint();
     const double budget =
         std::ldexp(moves[m + 1].ops.to_double(), 48 - 8) / static_cast<double>(regs.q * regs.len);
-    const auto cost = [&](double e) {
-      return e * (1 + len) + (e > n ? (e + n - 1) * (e - n) / 2 : 0) + n * (len - 1) / 2;
-    };
+    const auto cost = [&](double e) { return models::profile_entry_cost(e, n, regs.len); };
     uint32_t e = moves[m].end.to_uint();
     while (e > 0 && cost(e) > budget) --e;
     moves[m].end = e;
@@ -204,6 +201,7 @@ struct OvrTrace {
   uint32_t level_max = 0;
   int64_t v_max = 0;
   uint64_t over_accel = 0, over_jerk = 0;  // ticks with |dv| > q L, |d2v| > q
+  std::vector<uint64_t> v_at_end;          // the speed when each move's last op was taken
 };
 
 // `ovr(tick, ops, next_end, v)` gives the override word for each tick (held
@@ -238,7 +236,10 @@ OvrTrace run_override(const std::vector<Profile::Command>& moves, const models::
     }
     phase += std::min<uint64_t>(p.feed(), 1u << 16);
     for (; phase >= (1u << 16); phase -= 1u << 16)
-      if (r.total_ops < r.need && ++r.total_ops == ends[done]) ++done;
+      if (r.total_ops < r.need && ++r.total_ops == ends[done]) {
+        r.v_at_end.push_back(p.state().v);
+        ++done;
+      }
     const bool valid = sent < moves.size();
     const bool take = valid && p.cmd_ready();
     p.clock(valid, valid ? moves[sent] : Profile::Command{}, false, g.q, g.len, word);
@@ -249,7 +250,47 @@ OvrTrace run_override(const std::vector<Profile::Command>& moves, const models::
   r.ends_above = p.ends_above();
   EXPECT_EQ(r.over_accel, 0u) << "case " << k << ": ticks with |dv| > q L";
   EXPECT_EQ(r.over_jerk, 0u) << "case " << k << ": ticks with |d2v| > q";
+  // A move with an end level e > 0 is left at most at the end speed q L e
+  // (the speed, the moving sum, not only the level: hls/feed_profile.h).
+  for (size_t m = 0; m + 1 < moves.size() && m < r.v_at_end.size(); ++m)
+    if (moves[m].end.to_uint() > 0)
+      EXPECT_LE(r.v_at_end[m], g.q * g.len * moves[m].end.to_uint())
+          << "case " << k << " move " << m << ": its last operation above its end speed";
   return r;
+}
+
+// Junctions at speed: every move of a stream ends at a random planned end
+// level e > 0 and the next starts at once; the speed when the engine takes a
+// move's last operation is at most q L e (run_override checks it), and on
+// most junctions exactly q L e (the level held at e on both sides).
+TEST(FeedProfile, JunctionsArePassedAtMostAtTheirEndSpeed) {
+  std::mt19937_64 rng(41);
+  uint64_t junctions = 0, exact = 0;
+  for (int k = 0; k < 16; ++k) {
+    const Limits l = random_limits(rng, 1e6);
+    std::vector<Profile::Command> moves;
+    for (int m = 0; m < 8; ++m) {
+      Profile::Command c;
+      c.ops = std::uniform_int_distribution<uint32_t>(200, 20000)(rng);
+      c.target = std::uniform_int_distribution<uint32_t>(1, l.regs.max_level)(rng);
+      c.end = m == 7 ? 0 : std::uniform_int_distribution<uint32_t>(1, c.target.to_uint())(rng);
+      moves.push_back(c);
+    }
+    plan_ends(moves, l.regs);
+    const OvrTrace r = run_override(
+        moves, l.regs, [](uint64_t, uint64_t, uint64_t, uint64_t) { return 128u; }, k);
+    ASSERT_EQ(r.v_at_end.size(), moves.size()) << "case " << k;
+    EXPECT_EQ(r.ends_above, 0u) << "case " << k;
+    for (size_t m = 0; m + 1 < moves.size(); ++m) {
+      if (moves[m].end.to_uint() == 0) continue;
+      ++junctions;
+      exact += r.v_at_end[m] == l.regs.q * l.regs.len * moves[m].end.to_uint();
+    }
+  }
+  EXPECT_GT(junctions, 80u);
+  EXPECT_GT(exact, junctions / 2);
+  std::printf("%llu junctions at speed, %llu of them at exactly the end speed\n",
+              static_cast<unsigned long long>(junctions), static_cast<unsigned long long>(exact));
 }
 
 // Seeded random override sequences (0 %, 200 %, above 200 %, a new value every
