@@ -75,6 +75,11 @@ hwinterp_synth_block(NAME motion_soc_axil_n3 TOP motion_soc_axil FILES motion_so
   VARIANT motion_top_n3 PARAMS FIFO_DEPTH=16)
 hwinterp_synth_block(NAME motion_soc_wb_n3 TOP motion_soc_wb FILES motion_soc YOSYS yowasp
   VARIANT motion_top_n3 PARAMS FIFO_DEPTH=16)
+# ... and the AXI4-Lite top with the jerk-limited feed profile (PROFILE=1,
+# rtl/motion_soc.sv) at the profile's widths of feed_profile below.
+hwinterp_synth_block(NAME motion_soc_axil_prof_n3 TOP motion_soc_axil FILES motion_soc YOSYS yowasp
+  VARIANT motion_top_n3 PARAMS FIFO_DEPTH=16 PROFILE=1 SPD_W=48 TICK_W=10 LEN_W=10 PROF_LVL_W=16
+  MV_OPS_W=28)
 # feed_profile: the jerk-limited feed profile (docs/profile.md) at the widths
 # the harness runs it (tb/lockstep/harness_profile.h; rtl/CMakeLists.txt
 # Verilates Vfeed_profile_f<W>_cc from this line, at every variant's FEED_W).

@@ -15,17 +15,24 @@
 // response pins) are then those after the edge, as a Verilated model's after
 // its eval at clk_i = 1. The comparison with the Verilated tops, clock by
 // clock, is tb/bus/soc_run.h's (hwinterp gcode --bus; docs/soc.md).
+//
+// PROFILE = 1: the feed profile (hls/feed_profile.h, at rtl/motion_soc.sv's
+// default profile widths: SPD_W 48, TICK_W 10, LEN_W 10, PROF_LVL_W 16,
+// MV_OPS_W 28) drives motion_top's feed, the moves come from the FIFO's
+// second read pointer, the exact-stop rule and the watchdog's controlled stop
+// as rtl/motion_soc.sv states them.
 #pragma once
 
 #include <cstdint>
 
+#include "hls/feed_profile.h"
 #include "hls/gen/motion_soc_regs.h"
 #include "hls/motion_top.h"
 
 namespace hwinterp::hls {
 
 // The SoC between the register block's CPU interface and the step outputs.
-template <class Cfg, int FIFO_DEPTH = 16, int BUS = 0, uint32_t CLK_HZ = 50000000>
+template <class Cfg, int FIFO_DEPTH = 16, int BUS = 0, uint32_t CLK_HZ = 50000000, int PROFILE = 0>
 class MotionSoc {
  public:
   static constexpr int AXES = Cfg::AXES;
@@ -36,7 +43,11 @@ class MotionSoc {
   static constexpr int TIM_W = Cfg::TIM_W;
   static constexpr int FEED_W = Cfg::FEED_W;
   static_assert(FIFO_DEPTH >= 2 && FIFO_DEPTH <= 65535, "FIFO_DEPTH must be 2..65535");
+  static_assert(PROFILE == 0 || PROFILE == 1, "PROFILE must be 0 or 1");
+  // The feed profile's widths (rtl/motion_soc.sv's defaults).
+  static constexpr int SPD_W = 48, TICK_W = 10, LEN_W = 10, PROF_LVL_W = 16, MV_OPS_W = 28;
   using Core = MotionTop<Cfg>;
+  using Profile = FeedProfile<FEED_W, SPD_W, TICK_W, LEN_W, PROF_LVL_W, MV_OPS_W>;
   using Regs = motion_soc_regs::Block;
 
   struct Pins {
@@ -57,6 +68,9 @@ class MotionSoc {
     wdog_kick_q_ = false;
     wptr_q_ = rptr_q_ = cnt_q_ = 0;
     head_q_ = false;
+    mrptr_q_ = mcnt_q_ = 0;
+    mhead_q_ = stop_open_q_ = wstop_q_ = prof_clr_q_ = false;
+    if constexpr (PROFILE != 0) prof_.reset();
     step_prev_q_ = seen_q_ = neg_q_ = 0;
     probe_s_q_ = 0;
     probe_f_q_ = false;
@@ -91,7 +105,7 @@ class MotionSoc {
     ci.rst_n = true;
     ci.cmd_valid = cmd_valid_;
     ci.abort = abort_;
-    ci.feed = feed_word_;
+    ci.feed = PROFILE != 0 ? static_cast<uint32_t>(prof_.feed()) : feed_word_;
     ci.timing.step_len = step_len_;
     ci.timing.step_space = step_space_;
     ci.timing.dir_setup = dir_setup_;
@@ -101,6 +115,12 @@ class MotionSoc {
     // The edge.
     regs_.commit();
     core_.tick(ci);
+    if constexpr (PROFILE != 0) {
+      // The profile's reset is rst_ni && !prof_clr_q: held on a clock with
+      // prof_clr_q, and asserted right after the edge that sets it.
+      if (!prof_clr_q_) prof_.clock(mv_valid_, mv_cmd_, prof_hold_, prof_q_, prof_len_, prof_ovr_);
+      if (prof_clr_d_) prof_.reset();
+    }
     seq(p);
     core_out_ = core_.outputs();
   }
@@ -116,6 +136,10 @@ class MotionSoc {
   uint32_t fifo_level() const { return cnt_q_ + (head_q_ ? 1u : 0u); }
   uint64_t time() const { return time_q_; }
   uint32_t wdog_left() const { return wdog_left_q_; }
+  uint32_t move_count() const { return mcnt_q_; }  // the moves' RAM count (PROFILE)
+  bool move_head() const { return mhead_q_; }
+  uint64_t profile_feed() const { return PROFILE != 0 ? prof_.feed() : 0; }
+  const Profile& profile() const { return prof_; }
 
  private:
   // A FIFO entry (rtl/motion_soc.sv's ENTRY_W bits, as fields).
@@ -127,6 +151,11 @@ class MotionSoc {
     uint64_t ops = 0;
     uint32_t feed = 0;
     uint64_t at = 0;
+  };
+  // A move entry (the profile's FIFO).
+  struct Move {
+    uint64_t ops = 0;
+    uint32_t target = 0, end = 0, max = 0;
   };
 
   static constexpr uint64_t mask(int w) { return w >= 64 ? ~0ull : (1ull << w) - 1; }
@@ -172,6 +201,22 @@ class MotionSoc {
     push_entry_.feed = feed_sat(o.cmd_feed.value.value) & static_cast<uint32_t>(mask(FEED_W + 1));
     push_entry_.timed = o.cmd_flags.timed.value & 1;
     push_entry_.at = (o.cmd_at.hi.value << 32) | (o.cmd_at.lo.value & 0xFFFFFFFFu);
+    push_move_.ops = o.cmd_mv_ops.value.value & mask(MV_OPS_W);
+    push_move_.target = static_cast<uint32_t>(o.cmd_mv_target.value.value & mask(PROF_LVL_W));
+    push_move_.end = static_cast<uint32_t>(o.cmd_mv_end.value.value & mask(PROF_LVL_W));
+    push_move_.max = static_cast<uint32_t>(o.cmd_mv_max.value.value & mask(PROF_LVL_W));
+    // The profile's registers: q modulo 2^SPD_W, L saturated at 2^LEN_W.
+    prof_q_ = ((o.prof_q.hi.value << 32) | (o.prof_q.lo.value & 0xFFFFFFFFu)) & mask(SPD_W);
+    const uint64_t len = o.prof_len.value.value;
+    prof_len_ = static_cast<unsigned>(len > (1u << LEN_W) ? (1u << LEN_W) : len);
+    prof_ovr_ = static_cast<unsigned>(o.prof_ctrl.ovr.value & 511u);
+    prof_hold_ = o.prof_ctrl.hold.value || wstop_q_;
+    // The profile's outputs of this clock (reset values while cleared).
+    const uint64_t p_feed = PROFILE != 0 ? prof_.feed() : 0;
+    const uint64_t p_speed = PROFILE != 0 ? prof_.state().v : 0;
+    const uint32_t p_level = PROFILE != 0 ? prof_.state().c : 0;
+    const bool p_busy = PROFILE != 0 && prof_.busy();
+    const bool p_ready = PROFILE != 0 && prof_.cmd_ready();
     feed_word_ = feed_sat(o.feed.value.value) & static_cast<uint32_t>(mask(FEED_W + 1));
     step_len_ = sat32(o.step_len.value.value, TIM_W);
     step_space_ = sat32(o.step_space.value.value, TIM_W);
@@ -181,7 +226,7 @@ class MotionSoc {
     // Time, stop and abort.
     time_hi_d_ = o.time_lo.count.swacc ? static_cast<uint32_t>(time_q_ >> 32) : time_hi_q_;
     const bool estop = (estop_s_q_ >> 1) & 1;
-    const bool stopped = o.events.wdog.value || o.events.estop.value;
+    const bool stopped = o.events.wdog.value || o.events.estop.value || wstop_q_;
 
     // Watchdog.
     const uint64_t period = o.wdog_period.period.value;
@@ -211,21 +256,41 @@ class MotionSoc {
     latch_fire_ = latch_armed && probe_edge;
     const bool latch_stop = latch_fire_ && o.probe_cfg.stop.value;
     latch_armed_d_ = latch_armed && !probe_edge;
-    abort_ = o.ctrl.abort_motion.value || bite || estop || latch_stop;
+    // Without the profile the bite aborts; with it, the controlled stop's end.
+    const uint32_t step_now = static_cast<uint32_t>(core_out_.step.to_uint());
+    const bool prof_rest = p_speed == 0 && p_feed == 0 && step_now == 0;
+    const bool wstop_done = PROFILE != 0 && wstop_q_ && prof_rest;
+    abort_ =
+        o.ctrl.abort_motion.value || (PROFILE == 0 && bite) || wstop_done || estop || latch_stop;
+    wstop_d_ = PROFILE != 0 && !abort_ && (bite || wstop_q_);
+    prof_clr_d_ = PROFILE != 0 && abort_;
 
     // The FIFO and its head.
     const bool push = o.cmd_push.push.swmod;
-    const uint32_t level = cnt_q_ + (head_q_ ? 1u : 0u);
+    const uint32_t level_c = cnt_q_ + (head_q_ ? 1u : 0u);
+    const uint32_t level_m = mcnt_q_ + (mhead_q_ ? 1u : 0u);
+    const uint32_t level = level_m > level_c ? level_m : level_c;
     const bool full = level == static_cast<uint32_t>(FIFO_DEPTH);
     const bool push_refused = push && (stopped || abort_);
     const bool push_full = push && !push_refused && full;
     push_ok_ = push && !push_refused && !full;
     const bool head_due = !rdata_q_.timed || time_q_ >= rdata_q_.at;
     const bool head_late = rdata_q_.timed && time_q_ > rdata_q_.at;
-    cmd_valid_ = head_q_ && head_due && !abort_;
+    // The exact-stop rule, and the moves' side of the FIFO.
+    const bool stop_wait = stop_open_q_ && p_busy;
+    const bool cmd_hold = stop_wait && level_c <= level_m;
+    cmd_valid_ = head_q_ && head_due && !abort_ && !cmd_hold;
     const bool cmd_take = cmd_valid_ && core_out_.cmd_ready;
     re_ = !abort_ && cnt_q_ != 0 && (!head_q_ || cmd_take);
     cmd_take_ = cmd_take;
+    mv_valid_ = mhead_q_ && !abort_ && !stop_wait && !prof_clr_q_;
+    mv_take_ = mv_valid_ && p_ready;
+    mre_ = !abort_ && mcnt_q_ != 0 && (!mhead_q_ || mv_take_);
+    stop_open_d_ = !abort_ && (mv_take_ ? mrdata_q_.end == 0 : stop_wait);
+    mv_cmd_.ops = mrdata_q_.ops;
+    mv_cmd_.target = mrdata_q_.target;
+    mv_cmd_.end = mrdata_q_.end;
+    mv_cmd_.max = mrdata_q_.max;
 
     // Speed and step types.
     const uint32_t step = static_cast<uint32_t>(core_out_.step.to_uint());
@@ -255,6 +320,17 @@ class MotionSoc {
     h.id_build.core.next = 1;
     h.id_build.bus.next = BUS & 3;
     h.id_build.step_types.next = 7;
+    h.id_build.profile.next = PROFILE != 0;
+    if constexpr (PROFILE != 0) {
+      h.id_profile.spd_w.next = SPD_W;
+      h.id_profile.tick_w.next = TICK_W;
+      h.id_profile.len_w.next = LEN_W;
+      h.id_profile.lvl_w.next = PROF_LVL_W;
+    }
+    h.prof_level.c.next = p_level;
+    h.prof_speed.speed.next = p_speed;
+    h.status.prof_busy.next = p_busy;
+    h.status.wdog_stopping.next = wstop_q_;
     h.id_build.fifo_depth.next = FIFO_DEPTH & 0xFFFF;
     h.id_widths.acc_w.next = ACC_W & 0xFF;
     h.id_widths.coord_w.next = COORD_W & 0xFF;
@@ -328,11 +404,23 @@ class MotionSoc {
     const uint32_t dir = static_cast<uint32_t>(core_out_.dir.to_uint());
     // The FIFO (the RAM reads before it writes, as nonblocking assignments).
     if (re_) rdata_q_ = ram_[rptr_q_];
+    if constexpr (PROFILE != 0) {
+      if (mre_) mrdata_q_ = mram_[mrptr_q_];
+    }
     if (abort_) {
       rptr_q_ = wptr_q_;
       cnt_q_ = 0;
       head_q_ = false;
+      mrptr_q_ = wptr_q_;
+      mcnt_q_ = 0;
+      mhead_q_ = false;
     } else {
+      if constexpr (PROFILE != 0) {
+        if (push_ok_) mram_[wptr_q_] = push_move_;
+        mcnt_q_ = mcnt_q_ + (push_ok_ ? 1u : 0u) - (mre_ ? 1u : 0u);
+        mhead_q_ = mre_ || (mhead_q_ && !mv_take_);
+        if (mre_) mrptr_q_ = mrptr_q_ == FIFO_DEPTH - 1 ? 0 : mrptr_q_ + 1;
+      }
       if (push_ok_) ram_[wptr_q_] = push_entry_;
       const uint32_t next_w = wptr_q_ == FIFO_DEPTH - 1 ? 0 : wptr_q_ + 1;
       const uint32_t next_r = rptr_q_ == FIFO_DEPTH - 1 ? 0 : rptr_q_ + 1;
@@ -341,6 +429,9 @@ class MotionSoc {
       if (push_ok_) wptr_q_ = next_w;
       if (re_) rptr_q_ = next_r;
     }
+    stop_open_q_ = stop_open_d_;
+    wstop_q_ = wstop_d_;
+    prof_clr_q_ = prof_clr_d_;
     time_q_ = time_q_ + 1;
     time_hi_q_ = time_hi_d_;
     estop_s_q_ = static_cast<uint8_t>(((estop_s_q_ << 1) | (p.estop ? 1 : 0)) & 3);
@@ -413,6 +504,12 @@ class MotionSoc {
   Entry rdata_q_;  // the RAM's read register: the head
   uint32_t wptr_q_, rptr_q_, cnt_q_;
   bool head_q_;
+  // The moves' side (PROFILE): its RAM, read register, pointer, count, head.
+  Move mram_[PROFILE != 0 ? FIFO_DEPTH : 1];
+  Move mrdata_q_;
+  uint32_t mrptr_q_, mcnt_q_;
+  bool mhead_q_, stop_open_q_, wstop_q_, prof_clr_q_;
+  Profile prof_;
   uint64_t time_q_;
   uint32_t time_hi_q_;
   uint8_t estop_s_q_;
@@ -431,6 +528,12 @@ class MotionSoc {
 
   // This clock's combinational values (comb() to seq()).
   Entry push_entry_;
+  Move push_move_;
+  typename Profile::Command mv_cmd_;
+  bool mv_valid_ = false, mv_take_ = false, mre_ = false, stop_open_d_ = false;
+  bool wstop_d_ = false, prof_clr_d_ = false, prof_hold_ = false;
+  uint64_t prof_q_ = 0;
+  unsigned prof_len_ = 1, prof_ovr_ = 128;
   bool push_ok_ = false, re_ = false, abort_ = false, cmd_valid_ = false, cmd_take_ = false;
   bool latch_fire_ = false, snap_fire_ = false, latch_armed_d_ = false, snap_armed_d_ = false;
   bool wdog_kick_d_ = false, probe_f_d_ = false;

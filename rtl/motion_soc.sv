@@ -28,6 +28,36 @@
 // with a full period then). estop_i (synchronized, two flip-flops) does the
 // same while high, with EVENTS.estop. CTRL.abort_motion aborts once.
 //
+// The feed profile (PROFILE = 1; PROFILE = 0 builds are today's logic): the
+// jerk-limited feed profile (rtl/feed_profile.sv, docs/profile.md) drives
+// motion_top's feed_i as rtl/motion_profile.sv wires it (FEED is then
+// unused). Each FIFO entry carries the command and its profile move
+// (CMD_MV_OPS, CMD_MV_TARGET, CMD_MV_END, CMD_MV_MAX), and the FIFO has two
+// consumers that take from it independently: the profile's move port and
+// motion_top's command port. The FIFO head, the choice: a second read
+// pointer. The moves live in a second RAM written at the same address as the
+// commands (one write pointer) and read through their own read pointer, RAM
+// read register (the move head) and count, so the profile takes its moves as
+// far ahead of motion_top as its own pending/next slots allow, and a
+// junction with an end level above 0 is joined at speed. An entry's place
+// is free once both have read it: the level is the larger of the two
+// consumers' levels (count + head).
+// The exact-stop rule (tb/lockstep/profile_feed.h's, in hardware): once the
+// profile has taken a move whose end level is 0, the next move is not offered
+// and motion_top's next command (the first one whose move is not taken yet:
+// commands level <= moves level) is not offered while the profile is busy
+// (busy_o: moves queued, moving or settling).
+// Watchdog with the profile, a controlled stop: the bite sets EVENTS.wdog
+// (pushes refused) and STATUS.wdog_stopping, whose hold brings the profile to
+// rest along the path within its jerk and acceleration limits; on the first
+// clock with the profile's speed and feed word 0 and no step output high, the
+// FIFO is dropped and motion_top aborted (an abort clock as above), and the
+// profile is cleared (its reset for the next clock: a flip-flop's output,
+// so glitch-free) of the moves it still held. estop_i, CTRL.abort_motion and
+// a stopping probe latch stay immediate aborts (the profile cleared too).
+// PROF_CTRL.hold is the feed hold: the same controlled stop, and release
+// resumes the planned profile.
+//
 // Snapshot: SNAP_CTRL.arm arms it; on the first clock TIME >= SNAP_AT (at
 // once if passed) TIME, every axis's position and speed go into SNAP_TIME,
 // SNAP_POS, SNAP_SPEED together, EVENTS.snap. Probe latch: probe_i
@@ -55,7 +85,14 @@ module motion_soc #(
   parameter int FEED_W     = 16,  // as motion_top (1..31)
   parameter int FIFO_DEPTH = 16,  // commands the FIFO holds, the head included (2..65535)
   parameter int BUS        = 0,   // ID_BUILD.bus: 0 AXI4-Lite, 1 Wishbone
-  parameter int unsigned CLK_HZ = 50_000_000  // ID_CLOCK: the clock's frequency, Hz
+  parameter int unsigned CLK_HZ = 50_000_000,  // ID_CLOCK: the clock's frequency, Hz
+  parameter int PROFILE    = 0,   // 1: the feed profile drives motion_top's feed_i (0..1)
+  // the feed profile's (rtl/feed_profile.sv states their ranges; unused with PROFILE = 0)
+  parameter int SPD_W      = 48,  // speed fraction bits (FEED_W < SPD_W <= 62)
+  parameter int TICK_W     = 10,  // a tick is 2^TICK_W clocks
+  parameter int LEN_W      = 10,  // the moving sum is at most 2^LEN_W ticks (1..16)
+  parameter int PROF_LVL_W = 16,  // speed level bits (2..24)
+  parameter int MV_OPS_W   = 28   // operations of a move (2..40)
 ) (
   input  logic                                          clk_i,
   input  logic                                          rst_ni,      // asynchronous, active low
@@ -87,6 +124,16 @@ module motion_soc #(
   if (BUS < 0 || BUS > 1) begin : g_bad_bus
     $error("motion_soc: parameter BUS must be 0 (AXI4-Lite) or 1 (Wishbone)");
   end
+  if (PROFILE < 0 || PROFILE > 1) begin : g_bad_profile
+    $error("motion_soc: parameter PROFILE must be 0 (none) or 1 (the feed profile)");
+  end
+  if (PROFILE == 1 && (SPD_W <= FEED_W || SPD_W > 62)) begin : g_bad_spd_w
+    $error("motion_soc: parameter SPD_W must be FEED_W + 1..62");
+  end
+  if (PROFILE == 1 && (LEN_W < 1 || LEN_W > 16 || PROF_LVL_W < 2 || PROF_LVL_W > 24 ||
+                       MV_OPS_W < 2 || MV_OPS_W > 40)) begin : g_bad_prof_w
+    $error("motion_soc: parameters LEN_W (1..16), PROF_LVL_W (2..24), MV_OPS_W (2..40)");
+  end
 `endif
 
   localparam int PTR_W = $clog2(FIFO_DEPTH);
@@ -103,6 +150,12 @@ module motion_soc #(
   localparam int E_TIMED  = E_FEED + FEED_W + 1;
   localparam int E_AT     = E_TIMED + 1;
   localparam int ENTRY_W  = E_AT + 64;
+  // A move entry (the profile's FIFO): {max, end, target, ops}.
+  localparam int M_OPS    = 0;
+  localparam int M_TARGET = M_OPS + MV_OPS_W;
+  localparam int M_END    = M_TARGET + PROF_LVL_W;
+  localparam int M_MAX    = M_END + PROF_LVL_W;
+  localparam int MV_W     = M_MAX + PROF_LVL_W;
 
   // ---------------------------------------------------------------------------
   // Register values as the core's widths: signed values sign-extended from
@@ -129,6 +182,7 @@ module motion_soc #(
   logic [31:0] step_len32, step_space32, dir_setup32, dir_hold32;
   /* verilator lint_on UNUSEDSIGNAL */
   logic [ENTRY_W-1:0] push_entry;
+  logic [MV_W-1:0]    push_move;
 
   // The per-axis registers as arrays (the map has them as single instances).
   logic [31:0] delta_reg [6];
@@ -169,6 +223,12 @@ module motion_soc #(
     push_entry[E_FEED +: FEED_W + 1] = cmd_feed_w32[FEED_W:0];
     push_entry[E_TIMED] = hwif_out_i.cmd_flags.timed.value;
     push_entry[E_AT +: 64] = {hwif_out_i.cmd_at.hi.value, hwif_out_i.cmd_at.lo.value};
+
+    push_move = '0;
+    push_move[M_OPS +: MV_OPS_W]      = MV_OPS_W'(hwif_out_i.cmd_mv_ops.value.value);
+    push_move[M_TARGET +: PROF_LVL_W] = PROF_LVL_W'(hwif_out_i.cmd_mv_target.value.value);
+    push_move[M_END +: PROF_LVL_W]    = PROF_LVL_W'(hwif_out_i.cmd_mv_end.value.value);
+    push_move[M_MAX +: PROF_LVL_W]    = PROF_LVL_W'(hwif_out_i.cmd_mv_max.value.value);
   end
 
   // ---------------------------------------------------------------------------
@@ -181,14 +241,23 @@ module motion_soc #(
   logic        bite;
   logic        latch_fire, latch_stop;
   logic        abort;
+  logic        wstop_q, wstop_d;     // the watchdog's controlled stop is under way (PROFILE)
+  logic        wstop_done;           // ... and the profile and motion_top are at rest
+  logic        prof_clr_q, prof_clr_d;  // the profile's reset on this clock (after an abort)
+  logic        prof_rest;            // the profile's speed and feed word 0, no step output high
 
   assign time_d    = time_q + 64'd1;
   // Reading TIME_LO latches TIME_HI from the same clock's TIME.
   assign time_hi_d = hwif_out_i.time_lo.count.swacc ? time_q[63:32] : time_hi_q;
   assign estop_s_d = {estop_s_q[0], estop_i};
   assign estop     = estop_s_q[1];
-  assign stopped   = hwif_out_i.events.wdog.value || hwif_out_i.events.estop.value;
-  assign abort     = hwif_out_i.ctrl.abort_motion.value || bite || estop || latch_stop;
+  assign stopped   = hwif_out_i.events.wdog.value || hwif_out_i.events.estop.value || wstop_q;
+  // Without the profile the bite aborts; with it, the controlled stop's end does.
+  assign abort     = hwif_out_i.ctrl.abort_motion.value || (PROFILE == 0 && bite) || wstop_done ||
+                     estop || latch_stop;
+  assign wstop_done = PROFILE != 0 && wstop_q && prof_rest;
+  assign wstop_d    = PROFILE != 0 && !abort && (bite || wstop_q);
+  assign prof_clr_d = PROFILE != 0 && abort;
 
   // ---------------------------------------------------------------------------
   // Watchdog.
@@ -222,11 +291,25 @@ module motion_soc #(
   logic                head_due, head_late;
   logic                cmd_valid, cmd_ready, cmd_take;
   logic [63:0]         head_at;
+  // The moves' side (PROFILE): read pointer, count, head and RAM of its own.
+  logic [PTR_W-1:0]    mrptr_q, mrptr_d;
+  logic [LVL_W-1:0]    mcnt_q, mcnt_d;
+  logic                mhead_q, mhead_d;
+  logic [LVL_W-1:0]    level_c, level_m;
+  logic                mre;
+  logic [MV_W-1:0]     head_move;
+  logic                mv_valid, mv_ready, mv_take;
+  logic                stop_open_q, stop_open_d;  // an exact stop taken and not yet at rest
+  logic                stop_wait;                 // ... and the profile still busy
+  logic                cmd_hold;                  // motion_top's next command waits for it
+  logic                prof_busy;
 
   // The push: the clock of the write of CMD_PUSH (the staged values are in
   // their registers since the writes before it).
   assign push         = hwif_out_i.cmd_push.push.swmod;
-  assign level        = cnt_q + LVL_W'(head_q);
+  assign level_c      = cnt_q + LVL_W'(head_q);
+  assign level_m      = mcnt_q + LVL_W'(mhead_q);
+  assign level        = (level_m > level_c) ? level_m : level_c;
   assign full         = level == LVL_W'(FIFO_DEPTH);
   assign push_refused = push && (stopped || abort);
   assign push_full    = push && !push_refused && full;
@@ -235,24 +318,41 @@ module motion_soc #(
   assign head_at   = head_entry[E_AT +: 64];
   assign head_due  = !head_entry[E_TIMED] || time_q >= head_at;
   assign head_late = head_entry[E_TIMED] && time_q > head_at;
-  assign cmd_valid = head_q && head_due && !abort;
+  assign stop_wait = stop_open_q && prof_busy;
+  assign cmd_hold  = stop_wait && level_c <= level_m;
+  assign cmd_valid = head_q && head_due && !abort && !cmd_hold;
   assign cmd_take  = cmd_valid && cmd_ready;
   assign re        = !abort && cnt_q != '0 && (!head_q || cmd_take);
+  assign mv_valid  = mhead_q && !abort && !stop_wait && !prof_clr_q;
+  assign mv_take   = mv_valid && mv_ready;
+  assign mre       = !abort && mcnt_q != '0 && (!mhead_q || mv_take);
+  assign stop_open_d = !abort && (mv_take ? head_move[M_END +: PROF_LVL_W] == '0 : stop_wait);
 
   always_comb begin
     wptr_d = wptr_q;
     rptr_d = rptr_q;
     cnt_d  = cnt_q;
     head_d = head_q;
+    mrptr_d = mrptr_q;
+    mcnt_d  = mcnt_q;
+    mhead_d = mhead_q;
     if (abort) begin
       rptr_d = wptr_q;
       cnt_d  = '0;
       head_d = 1'b0;
+      mrptr_d = wptr_q;
+      mcnt_d  = '0;
+      mhead_d = 1'b0;
     end else begin
       if (push_ok) wptr_d = (wptr_q == PTR_W'(FIFO_DEPTH - 1)) ? '0 : wptr_q + PTR_W'(1);
       if (re)      rptr_d = (rptr_q == PTR_W'(FIFO_DEPTH - 1)) ? '0 : rptr_q + PTR_W'(1);
       cnt_d  = cnt_q + LVL_W'(push_ok) - LVL_W'(re);
       head_d = re || (head_q && !cmd_take);
+      if (PROFILE != 0) begin
+        if (mre) mrptr_d = (mrptr_q == PTR_W'(FIFO_DEPTH - 1)) ? '0 : mrptr_q + PTR_W'(1);
+        mcnt_d  = mcnt_q + LVL_W'(push_ok) - LVL_W'(mre);
+        mhead_d = mre || (mhead_q && !mv_take);
+      end
     end
   end
 
@@ -274,14 +374,87 @@ module motion_soc #(
     .rdata_o(head_entry)
   );
 
+  // The moves' RAM: the same words written, read through the moves' own
+  // pointer (the same argument: the level bounds both counts).
+  if (PROFILE != 0) begin : g_move_ram
+    prim_ram_1r1w #(
+      .WIDTH       (MV_W),
+      .DEPTH       (FIFO_DEPTH),
+      .SAME_WORD_RW(1'b0)
+    ) u_move_ram (
+      .clk_i,
+      .we_i   (push_ok && !abort),
+      .waddr_i(wptr_q),
+      .wdata_i(push_move),
+      .re_i   (mre),
+      .raddr_i(mrptr_q),
+      .rdata_o(head_move)
+    );
+  end else begin : g_no_move_ram
+    assign head_move = '0;
+  end
+
   // ---------------------------------------------------------------------------
   // The core.
   logic [AXES-1:0]       step, dir;
   logic [AXES*POS_W-1:0] pos;
   logic                  busy, done;
-  logic [FEED_W:0]       feed_word;
+  logic [FEED_W:0]       feed_word, prof_feed, core_feed;
+  logic [PROF_LVL_W-1:0] prof_level;
+  logic [SPD_W:0]        prof_speed;
+  logic                  prof_rst_n, prof_hold;
+  logic [SPD_W-1:0]      prof_q;
+  logic [LEN_W:0]        prof_len;
+  /* verilator lint_off UNUSEDSIGNAL */
+  logic [63:0]           prof_q64;
+  /* verilator lint_on UNUSEDSIGNAL */
 
   assign feed_word = feed_w32[FEED_W:0];
+  assign core_feed = (PROFILE != 0) ? prof_feed : feed_word;
+
+  // The profile's registers: q modulo 2^SPD_W, L saturated at 2^LEN_W.
+  assign prof_q64  = {hwif_out_i.prof_q.hi.value, hwif_out_i.prof_q.lo.value};
+  assign prof_q    = prof_q64[SPD_W-1:0];
+  assign prof_len  = (hwif_out_i.prof_len.value.value > (32'd1 << LEN_W)) ? (LEN_W + 1)'(1 << LEN_W)
+                                                                          : hwif_out_i.prof_len.value.value[LEN_W:0];
+  assign prof_hold = hwif_out_i.prof_ctrl.hold.value || wstop_q;
+  assign prof_rst_n = rst_ni && !prof_clr_q;
+
+  if (PROFILE != 0) begin : g_profile
+    feed_profile #(
+      .FEED_W(FEED_W),
+      .SPD_W (SPD_W),
+      .TICK_W(TICK_W),
+      .LEN_W (LEN_W),
+      .LVL_W (PROF_LVL_W),
+      .OPS_W (MV_OPS_W)
+    ) u_profile (
+      .clk_i,
+      .rst_ni      (prof_rst_n),
+      .q_i         (prof_q),
+      .len_i       (prof_len),
+      .cmd_valid_i (mv_valid),
+      .cmd_ready_o (mv_ready),
+      .cmd_ops_i   (head_move[M_OPS +: MV_OPS_W]),
+      .cmd_target_i(head_move[M_TARGET +: PROF_LVL_W]),
+      .cmd_end_i   (head_move[M_END +: PROF_LVL_W]),
+      .cmd_max_i   (head_move[M_MAX +: PROF_LVL_W]),
+      .hold_i      (prof_hold),
+      .ovr_i       (hwif_out_i.prof_ctrl.ovr.value),
+      .feed_o      (prof_feed),
+      .level_o     (prof_level),
+      .speed_o     (prof_speed),
+      .busy_o      (prof_busy)
+    );
+  end else begin : g_no_profile
+    assign mv_ready   = 1'b0;
+    assign prof_feed  = '0;
+    assign prof_level = '0;
+    assign prof_speed = '0;
+    assign prof_busy  = 1'b0;
+    logic unused_prof;
+    assign unused_prof = ^{prof_q, prof_len, prof_hold, prof_rst_n, push_move, head_move, mv_valid};
+  end
 
   motion_top #(
     .AXES   (AXES),
@@ -304,7 +477,7 @@ module motion_soc #(
     .cmd_ccw_i   (head_entry[E_CCW]),
     .cmd_ops_i   (head_entry[E_OPS +: OPS_W]),
     .cmd_feed_i  (head_entry[E_FEED +: FEED_W + 1]),
-    .feed_i      (feed_word),
+    .feed_i      (core_feed),
     .step_len_i  (step_len32[TIM_W-1:0]),
     .step_space_i(step_space32[TIM_W-1:0]),
     .dir_setup_i (dir_setup32[TIM_W-1:0]),
@@ -338,6 +511,7 @@ module motion_soc #(
   assign type_reg[4] = hwif_out_i.step_type.axis4.value;
   assign type_reg[5] = hwif_out_i.step_type.axis5.value;
   assign step_prev_d = step;
+  assign prof_rest   = prof_speed == '0 && prof_feed == '0 && step == '0;
   assign rise        = step & ~step_prev_q;
 
   always_comb begin
@@ -434,6 +608,17 @@ module motion_soc #(
     hwif_in_o.id_build.core.next       = 4'd1;
     hwif_in_o.id_build.bus.next        = 2'(BUS);
     hwif_in_o.id_build.step_types.next = 3'b111;
+    hwif_in_o.id_build.profile.next    = PROFILE != 0;
+    if (PROFILE != 0) begin
+      hwif_in_o.id_profile.spd_w.next  = 8'(SPD_W);
+      hwif_in_o.id_profile.tick_w.next = 8'(TICK_W);
+      hwif_in_o.id_profile.len_w.next  = 8'(LEN_W);
+      hwif_in_o.id_profile.lvl_w.next  = 8'(PROF_LVL_W);
+    end
+    hwif_in_o.prof_level.c.next      = 32'(prof_level);
+    hwif_in_o.prof_speed.speed.next  = 64'(prof_speed);
+    hwif_in_o.status.prof_busy.next     = prof_busy;
+    hwif_in_o.status.wdog_stopping.next = wstop_q;
     hwif_in_o.id_build.fifo_depth.next = 16'(FIFO_DEPTH);
     hwif_in_o.id_widths.acc_w.next     = 8'(ACC_W);
     hwif_in_o.id_widths.coord_w.next   = 8'(COORD_W);
@@ -518,6 +703,12 @@ module motion_soc #(
       rptr_q        <= '0;
       cnt_q         <= '0;
       head_q        <= 1'b0;
+      mrptr_q       <= '0;
+      mcnt_q        <= '0;
+      mhead_q       <= 1'b0;
+      stop_open_q   <= 1'b0;
+      wstop_q       <= 1'b0;
+      prof_clr_q    <= 1'b0;
       step_prev_q   <= '0;
       seen_q        <= '0;
       neg_q         <= '0;
@@ -545,6 +736,12 @@ module motion_soc #(
       rptr_q        <= rptr_d;
       cnt_q         <= cnt_d;
       head_q        <= head_d;
+      mrptr_q       <= mrptr_d;
+      mcnt_q        <= mcnt_d;
+      mhead_q       <= mhead_d;
+      stop_open_q   <= stop_open_d;
+      wstop_q       <= wstop_d;
+      prof_clr_q    <= prof_clr_d;
       step_prev_q   <= step_prev_d;
       seen_q        <= seen_d;
       neg_q         <= neg_d;

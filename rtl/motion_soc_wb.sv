@@ -16,7 +16,14 @@ module motion_soc_wb #(
   parameter int TIM_W      = 16,
   parameter int FEED_W     = 16,
   parameter int FIFO_DEPTH = 16,
-  parameter int unsigned CLK_HZ = 50_000_000
+  parameter int unsigned CLK_HZ = 50_000_000,
+  // the feed profile (rtl/motion_soc.sv states these)
+  parameter int PROFILE    = 0,
+  parameter int SPD_W      = 48,
+  parameter int TICK_W     = 10,
+  parameter int LEN_W      = 10,
+  parameter int PROF_LVL_W = 16,
+  parameter int MV_OPS_W   = 28
 ) (
   input  logic            clk_i,
   input  logic            rst_ni,
@@ -75,7 +82,13 @@ module motion_soc_wb #(
     .FEED_W    (FEED_W),
     .FIFO_DEPTH(FIFO_DEPTH),
     .BUS       (1),
-    .CLK_HZ    (CLK_HZ)
+    .CLK_HZ    (CLK_HZ),
+    .PROFILE   (PROFILE),
+    .SPD_W     (SPD_W),
+    .TICK_W    (TICK_W),
+    .LEN_W     (LEN_W),
+    .PROF_LVL_W(PROF_LVL_W),
+    .MV_OPS_W  (MV_OPS_W)
   ) u_soc (
     .clk_i,
     .rst_ni,

@@ -81,3 +81,34 @@ uint64_t soc_snapshot(volatile motion_soc_regs_t *soc, uint64_t at, int64_t *pos
   }
   return (uint64_t)REG32_HI(soc, snap_time) << 32 | REG32(soc, snap_time);
 }
+
+/* Builds with the feed profile (ID_BUILD.profile): its registers, taken while
+ * it is at rest; false without the profile. q and L from the machine's limits
+ * (models/feed_profile_model.h: speed quantum and moving sum). */
+bool soc_profile_init(volatile motion_soc_regs_t *soc, uint64_t q, uint32_t len) {
+  if (!(REG32(soc, id_build) & MOTION_SOC_REGS__ID_BUILD__PROFILE_bm)) return false;
+  REG32(soc, prof_q) = (uint32_t)q;
+  REG32_HI(soc, prof_q) = (uint32_t)(q >> 32);
+  REG32(soc, prof_len) = len;
+  return true;
+}
+
+/* The profile move of the next soc_push_line (its engine operations and the
+ * planned levels; end level 0: an exact stop), and a line following the
+ * profile (feed word 0). */
+bool soc_push_profiled_line(volatile motion_soc_regs_t *soc, const int32_t *delta, unsigned axes,
+                            uint32_t ops, uint32_t target, uint32_t end, uint32_t max) {
+  REG32(soc, cmd_mv_ops) = ops;
+  REG32(soc, cmd_mv_target) = target;
+  REG32(soc, cmd_mv_end) = end;
+  REG32(soc, cmd_mv_max) = max;
+  return soc_push_line(soc, delta, axes, 0, 0);
+}
+
+/* Feed hold (a controlled stop along the path) and the feed override in
+ * percent (0..200, steps of 1/128). */
+void soc_feed_hold(volatile motion_soc_regs_t *soc, bool hold, unsigned percent) {
+  uint32_t ovr = (percent * 128u + 50u) / 100u;
+  REG32(soc, prof_ctrl) = (ovr << MOTION_SOC_REGS__PROF_CTRL__OVR_bp) |
+                          (hold ? MOTION_SOC_REGS__PROF_CTRL__HOLD_bm : 0);
+}

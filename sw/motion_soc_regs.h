@@ -21,7 +21,7 @@ extern "C" {
 #define MOTION_SOC_REGS__ID_VERSION__MINOR_bm 0xffff
 #define MOTION_SOC_REGS__ID_VERSION__MINOR_bp 0
 #define MOTION_SOC_REGS__ID_VERSION__MINOR_bw 16
-#define MOTION_SOC_REGS__ID_VERSION__MINOR_reset 0x0
+#define MOTION_SOC_REGS__ID_VERSION__MINOR_reset 0x1
 #define MOTION_SOC_REGS__ID_VERSION__MAJOR_bm 0xffff0000
 #define MOTION_SOC_REGS__ID_VERSION__MAJOR_bp 16
 #define MOTION_SOC_REGS__ID_VERSION__MAJOR_bw 16
@@ -37,6 +37,9 @@ extern "C" {
 #define MOTION_SOC_REGS__ID_BUILD__BUS_bm 0x300
 #define MOTION_SOC_REGS__ID_BUILD__BUS_bp 8
 #define MOTION_SOC_REGS__ID_BUILD__BUS_bw 2
+#define MOTION_SOC_REGS__ID_BUILD__PROFILE_bm 0x400
+#define MOTION_SOC_REGS__ID_BUILD__PROFILE_bp 10
+#define MOTION_SOC_REGS__ID_BUILD__PROFILE_bw 1
 #define MOTION_SOC_REGS__ID_BUILD__STEP_TYPES_bm 0x7000
 #define MOTION_SOC_REGS__ID_BUILD__STEP_TYPES_bp 12
 #define MOTION_SOC_REGS__ID_BUILD__STEP_TYPES_bw 3
@@ -70,6 +73,20 @@ extern "C" {
 #define MOTION_SOC_REGS__ID_CLOCK__HZ_bm 0xffffffff
 #define MOTION_SOC_REGS__ID_CLOCK__HZ_bp 0
 #define MOTION_SOC_REGS__ID_CLOCK__HZ_bw 32
+
+// reg - motion_soc_regs::id_profile
+#define MOTION_SOC_REGS__ID_PROFILE__SPD_W_bm 0xff
+#define MOTION_SOC_REGS__ID_PROFILE__SPD_W_bp 0
+#define MOTION_SOC_REGS__ID_PROFILE__SPD_W_bw 8
+#define MOTION_SOC_REGS__ID_PROFILE__TICK_W_bm 0xff00
+#define MOTION_SOC_REGS__ID_PROFILE__TICK_W_bp 8
+#define MOTION_SOC_REGS__ID_PROFILE__TICK_W_bw 8
+#define MOTION_SOC_REGS__ID_PROFILE__LEN_W_bm 0xff0000
+#define MOTION_SOC_REGS__ID_PROFILE__LEN_W_bp 16
+#define MOTION_SOC_REGS__ID_PROFILE__LEN_W_bw 8
+#define MOTION_SOC_REGS__ID_PROFILE__LVL_W_bm 0xff000000
+#define MOTION_SOC_REGS__ID_PROFILE__LVL_W_bp 24
+#define MOTION_SOC_REGS__ID_PROFILE__LVL_W_bw 8
 
 // reg - motion_soc_regs::ctrl
 #define MOTION_SOC_REGS__CTRL__ABORT_MOTION_bm 0x1
@@ -108,6 +125,12 @@ extern "C" {
 #define MOTION_SOC_REGS__STATUS__WAITING_bm 0x200
 #define MOTION_SOC_REGS__STATUS__WAITING_bp 9
 #define MOTION_SOC_REGS__STATUS__WAITING_bw 1
+#define MOTION_SOC_REGS__STATUS__PROF_BUSY_bm 0x400
+#define MOTION_SOC_REGS__STATUS__PROF_BUSY_bp 10
+#define MOTION_SOC_REGS__STATUS__PROF_BUSY_bw 1
+#define MOTION_SOC_REGS__STATUS__WDOG_STOPPING_bm 0x800
+#define MOTION_SOC_REGS__STATUS__WDOG_STOPPING_bp 11
+#define MOTION_SOC_REGS__STATUS__WDOG_STOPPING_bw 1
 
 // reg - motion_soc_regs::events
 #define MOTION_SOC_REGS__EVENTS__OVERFLOW_bm 0x1
@@ -316,6 +339,32 @@ extern "C" {
 #define MOTION_SOC_REGS__SNAP_SPEED_R__NEG_bp 31
 #define MOTION_SOC_REGS__SNAP_SPEED_R__NEG_bw 1
 
+// reg - motion_soc_regs::prof_q
+#define MOTION_SOC_REGS__PROF_Q__LO_bm 0xffffffff
+#define MOTION_SOC_REGS__PROF_Q__LO_bp 0
+#define MOTION_SOC_REGS__PROF_Q__LO_bw 32
+#define MOTION_SOC_REGS__PROF_Q__LO_reset 0x0
+#define MOTION_SOC_REGS__PROF_Q__HI_bm 0xffffffff00000000
+#define MOTION_SOC_REGS__PROF_Q__HI_bp 32
+#define MOTION_SOC_REGS__PROF_Q__HI_bw 32
+#define MOTION_SOC_REGS__PROF_Q__HI_reset 0x0
+
+// reg - motion_soc_regs::prof_len
+#define MOTION_SOC_REGS__PROF_LEN__VALUE_bm 0xffffffff
+#define MOTION_SOC_REGS__PROF_LEN__VALUE_bp 0
+#define MOTION_SOC_REGS__PROF_LEN__VALUE_bw 32
+#define MOTION_SOC_REGS__PROF_LEN__VALUE_reset 0x1
+
+// reg - motion_soc_regs::prof_ctrl
+#define MOTION_SOC_REGS__PROF_CTRL__HOLD_bm 0x1
+#define MOTION_SOC_REGS__PROF_CTRL__HOLD_bp 0
+#define MOTION_SOC_REGS__PROF_CTRL__HOLD_bw 1
+#define MOTION_SOC_REGS__PROF_CTRL__HOLD_reset 0x0
+#define MOTION_SOC_REGS__PROF_CTRL__OVR_bm 0x1ff0000
+#define MOTION_SOC_REGS__PROF_CTRL__OVR_bp 16
+#define MOTION_SOC_REGS__PROF_CTRL__OVR_bw 9
+#define MOTION_SOC_REGS__PROF_CTRL__OVR_reset 0x80
+
 // reg - motion_soc_regs::probe_cfg
 #define MOTION_SOC_REGS__PROBE_CFG__FILTER_bm 0xffff
 #define MOTION_SOC_REGS__PROBE_CFG__FILTER_bp 0
@@ -345,6 +394,16 @@ extern "C" {
 #define MOTION_SOC_REGS__LATCH_POS_R__POS_bm 0xffffffffffffffff
 #define MOTION_SOC_REGS__LATCH_POS_R__POS_bp 0
 #define MOTION_SOC_REGS__LATCH_POS_R__POS_bw 64
+
+// reg - motion_soc_regs::prof_level
+#define MOTION_SOC_REGS__PROF_LEVEL__C_bm 0xffffffff
+#define MOTION_SOC_REGS__PROF_LEVEL__C_bp 0
+#define MOTION_SOC_REGS__PROF_LEVEL__C_bw 32
+
+// reg - motion_soc_regs::prof_speed
+#define MOTION_SOC_REGS__PROF_SPEED__SPEED_bm 0xffffffffffffffff
+#define MOTION_SOC_REGS__PROF_SPEED__SPEED_bp 0
+#define MOTION_SOC_REGS__PROF_SPEED__SPEED_bw 64
 
 // reg - motion_soc_regs::cmd_delta_r
 #define MOTION_SOC_REGS__CMD_DELTA_R__VALUE_bm 0xffffffff
@@ -410,6 +469,30 @@ extern "C" {
 #define MOTION_SOC_REGS__CMD_PUSH__PUSH_bw 1
 #define MOTION_SOC_REGS__CMD_PUSH__PUSH_reset 0x0
 
+// reg - motion_soc_regs::cmd_mv_ops
+#define MOTION_SOC_REGS__CMD_MV_OPS__VALUE_bm 0xffffffff
+#define MOTION_SOC_REGS__CMD_MV_OPS__VALUE_bp 0
+#define MOTION_SOC_REGS__CMD_MV_OPS__VALUE_bw 32
+#define MOTION_SOC_REGS__CMD_MV_OPS__VALUE_reset 0x0
+
+// reg - motion_soc_regs::cmd_mv_target
+#define MOTION_SOC_REGS__CMD_MV_TARGET__VALUE_bm 0xffffffff
+#define MOTION_SOC_REGS__CMD_MV_TARGET__VALUE_bp 0
+#define MOTION_SOC_REGS__CMD_MV_TARGET__VALUE_bw 32
+#define MOTION_SOC_REGS__CMD_MV_TARGET__VALUE_reset 0x0
+
+// reg - motion_soc_regs::cmd_mv_end
+#define MOTION_SOC_REGS__CMD_MV_END__VALUE_bm 0xffffffff
+#define MOTION_SOC_REGS__CMD_MV_END__VALUE_bp 0
+#define MOTION_SOC_REGS__CMD_MV_END__VALUE_bw 32
+#define MOTION_SOC_REGS__CMD_MV_END__VALUE_reset 0x0
+
+// reg - motion_soc_regs::cmd_mv_max
+#define MOTION_SOC_REGS__CMD_MV_MAX__VALUE_bm 0xffffffff
+#define MOTION_SOC_REGS__CMD_MV_MAX__VALUE_bp 0
+#define MOTION_SOC_REGS__CMD_MV_MAX__VALUE_bw 32
+#define MOTION_SOC_REGS__CMD_MV_MAX__VALUE_reset 0x0
+
 // addrmap - motion_soc_regs
 typedef struct __attribute__ ((__packed__)) {
     uint32_t id_magic;
@@ -418,7 +501,8 @@ typedef struct __attribute__ ((__packed__)) {
     uint32_t id_widths;
     uint32_t id_widths2;
     uint32_t id_clock;
-    uint8_t RESERVED_18_1f[0x8];
+    uint32_t id_profile;
+    uint8_t RESERVED_1c_1f[0x4];
     uint32_t ctrl;
     uint32_t status;
     uint32_t events;
@@ -457,7 +541,10 @@ typedef struct __attribute__ ((__packed__)) {
     uint32_t snap_speed3;
     uint32_t snap_speed4;
     uint32_t snap_speed5;
-    uint8_t RESERVED_e8_ff[0x18];
+    uint8_t RESERVED_e8_ef[0x8];
+    uint64_t prof_q;
+    uint32_t prof_len;
+    uint32_t prof_ctrl;
     uint32_t probe_cfg;
     uint32_t latch_ctrl;
     uint64_t latch_time;
@@ -467,7 +554,10 @@ typedef struct __attribute__ ((__packed__)) {
     uint64_t latch_pos3;
     uint64_t latch_pos4;
     uint64_t latch_pos5;
-    uint8_t RESERVED_140_1ff[0xc0];
+    uint32_t prof_level;
+    uint8_t RESERVED_144_147[0x4];
+    uint64_t prof_speed;
+    uint8_t RESERVED_150_1ff[0xb0];
     uint32_t cmd_delta0;
     uint32_t cmd_delta1;
     uint32_t cmd_delta2;
@@ -483,10 +573,14 @@ typedef struct __attribute__ ((__packed__)) {
     uint64_t cmd_at;
     uint32_t cmd_flags;
     uint32_t cmd_push;
+    uint32_t cmd_mv_ops;
+    uint32_t cmd_mv_target;
+    uint32_t cmd_mv_end;
+    uint32_t cmd_mv_max;
 } motion_soc_regs_t;
 
 
-static_assert(sizeof(motion_soc_regs_t) == 0x240, "Packing error");
+static_assert(sizeof(motion_soc_regs_t) == 0x250, "Packing error");
 
 #ifdef __cplusplus
 }

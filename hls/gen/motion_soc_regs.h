@@ -9,7 +9,7 @@
 namespace hwinterp::hls::motion_soc_regs {
 
 inline constexpr int kAddrWidth = 10;  // byte address bits
-inline constexpr uint32_t kSize = 0x240;  // bytes
+inline constexpr uint32_t kSize = 0x250;  // bytes
 
 // Access of a register or field from software.
 enum class Sw { kR, kW, kRw };
@@ -37,6 +37,7 @@ inline constexpr RegDesc kRegs[] = {
     {"id_widths", 0xc, 1, 0, 1, Sw::kR},
     {"id_widths2", 0x10, 1, 0, 1, Sw::kR},
     {"id_clock", 0x14, 1, 0, 1, Sw::kR},
+    {"id_profile", 0x18, 1, 0, 1, Sw::kR},
     {"ctrl", 0x20, 1, 0, 1, Sw::kW},
     {"status", 0x24, 1, 0, 1, Sw::kR},
     {"events", 0x28, 1, 0, 1, Sw::kRw},
@@ -69,6 +70,9 @@ inline constexpr RegDesc kRegs[] = {
     {"snap_speed3", 0xdc, 1, 0, 1, Sw::kR},
     {"snap_speed4", 0xe0, 1, 0, 1, Sw::kR},
     {"snap_speed5", 0xe4, 1, 0, 1, Sw::kR},
+    {"prof_q", 0xf0, 1, 0, 2, Sw::kRw},
+    {"prof_len", 0xf8, 1, 0, 1, Sw::kRw},
+    {"prof_ctrl", 0xfc, 1, 0, 1, Sw::kRw},
     {"probe_cfg", 0x100, 1, 0, 1, Sw::kRw},
     {"latch_ctrl", 0x104, 1, 0, 1, Sw::kW},
     {"latch_time", 0x108, 1, 0, 2, Sw::kR},
@@ -78,6 +82,8 @@ inline constexpr RegDesc kRegs[] = {
     {"latch_pos3", 0x128, 1, 0, 2, Sw::kR},
     {"latch_pos4", 0x130, 1, 0, 2, Sw::kR},
     {"latch_pos5", 0x138, 1, 0, 2, Sw::kR},
+    {"prof_level", 0x140, 1, 0, 1, Sw::kR},
+    {"prof_speed", 0x148, 1, 0, 2, Sw::kR},
     {"cmd_delta0", 0x200, 1, 0, 1, Sw::kW},
     {"cmd_delta1", 0x204, 1, 0, 1, Sw::kW},
     {"cmd_delta2", 0x208, 1, 0, 1, Sw::kW},
@@ -93,14 +99,19 @@ inline constexpr RegDesc kRegs[] = {
     {"cmd_at", 0x230, 1, 0, 2, Sw::kW},
     {"cmd_flags", 0x238, 1, 0, 1, Sw::kW},
     {"cmd_push", 0x23c, 1, 0, 1, Sw::kW},
+    {"cmd_mv_ops", 0x240, 1, 0, 1, Sw::kW},
+    {"cmd_mv_target", 0x244, 1, 0, 1, Sw::kW},
+    {"cmd_mv_end", 0x248, 1, 0, 1, Sw::kW},
+    {"cmd_mv_max", 0x24c, 1, 0, 1, Sw::kW},
 };
 inline constexpr FieldDesc kFields[] = {
     {0, "magic", 0, 32, Sw::kR, false, 0x484d5331ull, false, false},
-    {1, "minor", 0, 16, Sw::kR, false, 0x0ull, false, false},
+    {1, "minor", 0, 16, Sw::kR, false, 0x1ull, false, false},
     {1, "major", 16, 16, Sw::kR, false, 0x1ull, false, false},
     {2, "axes", 0, 4, Sw::kR, true, 0x0ull, false, false},
     {2, "core", 4, 4, Sw::kR, true, 0x0ull, false, false},
     {2, "bus", 8, 2, Sw::kR, true, 0x0ull, false, false},
+    {2, "profile", 10, 1, Sw::kR, true, 0x0ull, false, false},
     {2, "step_types", 12, 3, Sw::kR, true, 0x0ull, false, false},
     {2, "fifo_depth", 16, 16, Sw::kR, true, 0x0ull, false, false},
     {3, "acc_w", 0, 8, Sw::kR, true, 0x0ull, false, false},
@@ -110,66 +121,70 @@ inline constexpr FieldDesc kFields[] = {
     {4, "tim_w", 0, 8, Sw::kR, true, 0x0ull, false, false},
     {4, "feed_w", 8, 8, Sw::kR, true, 0x0ull, false, false},
     {5, "hz", 0, 32, Sw::kR, true, 0x0ull, false, false},
-    {6, "abort_motion", 0, 1, Sw::kW, false, 0x0ull, false, true},
-    {7, "busy", 0, 1, Sw::kR, true, 0x0ull, false, false},
-    {7, "fifo_empty", 1, 1, Sw::kR, true, 0x0ull, false, false},
-    {7, "fifo_full", 2, 1, Sw::kR, true, 0x0ull, false, false},
-    {7, "low", 3, 1, Sw::kR, true, 0x0ull, false, false},
-    {7, "probe", 4, 1, Sw::kR, true, 0x0ull, false, false},
-    {7, "wdog_run", 5, 1, Sw::kR, true, 0x0ull, false, false},
-    {7, "stopped", 6, 1, Sw::kR, true, 0x0ull, false, false},
-    {7, "snap_armed", 7, 1, Sw::kR, true, 0x0ull, false, false},
-    {7, "latch_armed", 8, 1, Sw::kR, true, 0x0ull, false, false},
-    {7, "waiting", 9, 1, Sw::kR, true, 0x0ull, false, false},
-    {8, "overflow", 0, 1, Sw::kRw, true, 0x0ull, true, false},
-    {8, "refused", 1, 1, Sw::kRw, true, 0x0ull, true, false},
-    {8, "late", 2, 1, Sw::kRw, true, 0x0ull, true, false},
-    {8, "wdog", 3, 1, Sw::kRw, true, 0x0ull, true, false},
-    {8, "snap", 4, 1, Sw::kRw, true, 0x0ull, true, false},
-    {8, "latch", 5, 1, Sw::kRw, true, 0x0ull, true, false},
-    {8, "low_water", 6, 1, Sw::kRw, true, 0x0ull, true, false},
-    {8, "estop", 7, 1, Sw::kRw, true, 0x0ull, true, false},
-    {8, "done", 8, 1, Sw::kRw, true, 0x0ull, true, false},
-    {9, "overflow", 0, 1, Sw::kRw, false, 0x0ull, false, false},
-    {9, "refused", 1, 1, Sw::kRw, false, 0x0ull, false, false},
-    {9, "late", 2, 1, Sw::kRw, false, 0x0ull, false, false},
-    {9, "wdog", 3, 1, Sw::kRw, false, 0x0ull, false, false},
-    {9, "snap", 4, 1, Sw::kRw, false, 0x0ull, false, false},
-    {9, "latch", 5, 1, Sw::kRw, false, 0x0ull, false, false},
-    {9, "low_water", 6, 1, Sw::kRw, false, 0x0ull, false, false},
-    {9, "estop", 7, 1, Sw::kRw, false, 0x0ull, false, false},
-    {9, "done", 8, 1, Sw::kRw, false, 0x0ull, false, false},
-    {10, "fill", 0, 16, Sw::kR, true, 0x0ull, false, false},
-    {10, "room", 16, 16, Sw::kR, true, 0x0ull, false, false},
-    {11, "mark", 0, 16, Sw::kRw, false, 0x0ull, false, false},
-    {12, "value", 0, 32, Sw::kRw, false, 0xffffffffull, false, false},
-    {13, "value", 0, 32, Sw::kRw, false, 0x0ull, false, false},
+    {6, "spd_w", 0, 8, Sw::kR, true, 0x0ull, false, false},
+    {6, "tick_w", 8, 8, Sw::kR, true, 0x0ull, false, false},
+    {6, "len_w", 16, 8, Sw::kR, true, 0x0ull, false, false},
+    {6, "lvl_w", 24, 8, Sw::kR, true, 0x0ull, false, false},
+    {7, "abort_motion", 0, 1, Sw::kW, false, 0x0ull, false, true},
+    {8, "busy", 0, 1, Sw::kR, true, 0x0ull, false, false},
+    {8, "fifo_empty", 1, 1, Sw::kR, true, 0x0ull, false, false},
+    {8, "fifo_full", 2, 1, Sw::kR, true, 0x0ull, false, false},
+    {8, "low", 3, 1, Sw::kR, true, 0x0ull, false, false},
+    {8, "probe", 4, 1, Sw::kR, true, 0x0ull, false, false},
+    {8, "wdog_run", 5, 1, Sw::kR, true, 0x0ull, false, false},
+    {8, "stopped", 6, 1, Sw::kR, true, 0x0ull, false, false},
+    {8, "snap_armed", 7, 1, Sw::kR, true, 0x0ull, false, false},
+    {8, "latch_armed", 8, 1, Sw::kR, true, 0x0ull, false, false},
+    {8, "waiting", 9, 1, Sw::kR, true, 0x0ull, false, false},
+    {8, "prof_busy", 10, 1, Sw::kR, true, 0x0ull, false, false},
+    {8, "wdog_stopping", 11, 1, Sw::kR, true, 0x0ull, false, false},
+    {9, "overflow", 0, 1, Sw::kRw, true, 0x0ull, true, false},
+    {9, "refused", 1, 1, Sw::kRw, true, 0x0ull, true, false},
+    {9, "late", 2, 1, Sw::kRw, true, 0x0ull, true, false},
+    {9, "wdog", 3, 1, Sw::kRw, true, 0x0ull, true, false},
+    {9, "snap", 4, 1, Sw::kRw, true, 0x0ull, true, false},
+    {9, "latch", 5, 1, Sw::kRw, true, 0x0ull, true, false},
+    {9, "low_water", 6, 1, Sw::kRw, true, 0x0ull, true, false},
+    {9, "estop", 7, 1, Sw::kRw, true, 0x0ull, true, false},
+    {9, "done", 8, 1, Sw::kRw, true, 0x0ull, true, false},
+    {10, "overflow", 0, 1, Sw::kRw, false, 0x0ull, false, false},
+    {10, "refused", 1, 1, Sw::kRw, false, 0x0ull, false, false},
+    {10, "late", 2, 1, Sw::kRw, false, 0x0ull, false, false},
+    {10, "wdog", 3, 1, Sw::kRw, false, 0x0ull, false, false},
+    {10, "snap", 4, 1, Sw::kRw, false, 0x0ull, false, false},
+    {10, "latch", 5, 1, Sw::kRw, false, 0x0ull, false, false},
+    {10, "low_water", 6, 1, Sw::kRw, false, 0x0ull, false, false},
+    {10, "estop", 7, 1, Sw::kRw, false, 0x0ull, false, false},
+    {10, "done", 8, 1, Sw::kRw, false, 0x0ull, false, false},
+    {11, "fill", 0, 16, Sw::kR, true, 0x0ull, false, false},
+    {11, "room", 16, 16, Sw::kR, true, 0x0ull, false, false},
+    {12, "mark", 0, 16, Sw::kRw, false, 0x0ull, false, false},
+    {13, "value", 0, 32, Sw::kRw, false, 0xffffffffull, false, false},
     {14, "value", 0, 32, Sw::kRw, false, 0x0ull, false, false},
     {15, "value", 0, 32, Sw::kRw, false, 0x0ull, false, false},
     {16, "value", 0, 32, Sw::kRw, false, 0x0ull, false, false},
-    {17, "axis0", 0, 2, Sw::kRw, false, 0x0ull, false, false},
-    {17, "axis1", 2, 2, Sw::kRw, false, 0x0ull, false, false},
-    {17, "axis2", 4, 2, Sw::kRw, false, 0x0ull, false, false},
-    {17, "axis3", 6, 2, Sw::kRw, false, 0x0ull, false, false},
-    {17, "axis4", 8, 2, Sw::kRw, false, 0x0ull, false, false},
-    {17, "axis5", 10, 2, Sw::kRw, false, 0x0ull, false, false},
-    {18, "count", 0, 32, Sw::kR, true, 0x0ull, false, false},
+    {17, "value", 0, 32, Sw::kRw, false, 0x0ull, false, false},
+    {18, "axis0", 0, 2, Sw::kRw, false, 0x0ull, false, false},
+    {18, "axis1", 2, 2, Sw::kRw, false, 0x0ull, false, false},
+    {18, "axis2", 4, 2, Sw::kRw, false, 0x0ull, false, false},
+    {18, "axis3", 6, 2, Sw::kRw, false, 0x0ull, false, false},
+    {18, "axis4", 8, 2, Sw::kRw, false, 0x0ull, false, false},
+    {18, "axis5", 10, 2, Sw::kRw, false, 0x0ull, false, false},
     {19, "count", 0, 32, Sw::kR, true, 0x0ull, false, false},
-    {20, "period", 0, 32, Sw::kRw, false, 0x0ull, false, false},
-    {21, "kick", 0, 1, Sw::kW, false, 0x0ull, false, false},
-    {22, "left", 0, 32, Sw::kR, true, 0x0ull, false, false},
-    {23, "lo", 0, 32, Sw::kRw, false, 0x0ull, false, false},
-    {23, "hi", 32, 32, Sw::kRw, false, 0x0ull, false, false},
-    {24, "arm", 0, 1, Sw::kW, false, 0x0ull, false, true},
-    {25, "count", 0, 64, Sw::kR, true, 0x0ull, false, false},
-    {26, "pos", 0, 64, Sw::kR, true, 0x0ull, false, false},
+    {20, "count", 0, 32, Sw::kR, true, 0x0ull, false, false},
+    {21, "period", 0, 32, Sw::kRw, false, 0x0ull, false, false},
+    {22, "kick", 0, 1, Sw::kW, false, 0x0ull, false, false},
+    {23, "left", 0, 32, Sw::kR, true, 0x0ull, false, false},
+    {24, "lo", 0, 32, Sw::kRw, false, 0x0ull, false, false},
+    {24, "hi", 32, 32, Sw::kRw, false, 0x0ull, false, false},
+    {25, "arm", 0, 1, Sw::kW, false, 0x0ull, false, true},
+    {26, "count", 0, 64, Sw::kR, true, 0x0ull, false, false},
     {27, "pos", 0, 64, Sw::kR, true, 0x0ull, false, false},
     {28, "pos", 0, 64, Sw::kR, true, 0x0ull, false, false},
     {29, "pos", 0, 64, Sw::kR, true, 0x0ull, false, false},
     {30, "pos", 0, 64, Sw::kR, true, 0x0ull, false, false},
     {31, "pos", 0, 64, Sw::kR, true, 0x0ull, false, false},
-    {32, "period", 0, 31, Sw::kR, true, 0x0ull, false, false},
-    {32, "neg", 31, 1, Sw::kR, true, 0x0ull, false, false},
+    {32, "pos", 0, 64, Sw::kR, true, 0x0ull, false, false},
     {33, "period", 0, 31, Sw::kR, true, 0x0ull, false, false},
     {33, "neg", 31, 1, Sw::kR, true, 0x0ull, false, false},
     {34, "period", 0, 31, Sw::kR, true, 0x0ull, false, false},
@@ -180,36 +195,49 @@ inline constexpr FieldDesc kFields[] = {
     {36, "neg", 31, 1, Sw::kR, true, 0x0ull, false, false},
     {37, "period", 0, 31, Sw::kR, true, 0x0ull, false, false},
     {37, "neg", 31, 1, Sw::kR, true, 0x0ull, false, false},
-    {38, "filter", 0, 16, Sw::kRw, false, 0x0ull, false, false},
-    {38, "falling", 16, 1, Sw::kRw, false, 0x0ull, false, false},
-    {38, "stop", 17, 1, Sw::kRw, false, 0x0ull, false, false},
-    {39, "arm", 0, 1, Sw::kW, false, 0x0ull, false, true},
-    {40, "count", 0, 64, Sw::kR, true, 0x0ull, false, false},
-    {41, "pos", 0, 64, Sw::kR, true, 0x0ull, false, false},
-    {42, "pos", 0, 64, Sw::kR, true, 0x0ull, false, false},
-    {43, "pos", 0, 64, Sw::kR, true, 0x0ull, false, false},
-    {44, "pos", 0, 64, Sw::kR, true, 0x0ull, false, false},
+    {38, "period", 0, 31, Sw::kR, true, 0x0ull, false, false},
+    {38, "neg", 31, 1, Sw::kR, true, 0x0ull, false, false},
+    {39, "lo", 0, 32, Sw::kRw, false, 0x0ull, false, false},
+    {39, "hi", 32, 32, Sw::kRw, false, 0x0ull, false, false},
+    {40, "value", 0, 32, Sw::kRw, false, 0x1ull, false, false},
+    {41, "hold", 0, 1, Sw::kRw, false, 0x0ull, false, false},
+    {41, "ovr", 16, 9, Sw::kRw, false, 0x80ull, false, false},
+    {42, "filter", 0, 16, Sw::kRw, false, 0x0ull, false, false},
+    {42, "falling", 16, 1, Sw::kRw, false, 0x0ull, false, false},
+    {42, "stop", 17, 1, Sw::kRw, false, 0x0ull, false, false},
+    {43, "arm", 0, 1, Sw::kW, false, 0x0ull, false, true},
+    {44, "count", 0, 64, Sw::kR, true, 0x0ull, false, false},
     {45, "pos", 0, 64, Sw::kR, true, 0x0ull, false, false},
     {46, "pos", 0, 64, Sw::kR, true, 0x0ull, false, false},
-    {47, "value", 0, 32, Sw::kW, false, 0x0ull, false, false},
-    {48, "value", 0, 32, Sw::kW, false, 0x0ull, false, false},
-    {49, "value", 0, 32, Sw::kW, false, 0x0ull, false, false},
-    {50, "value", 0, 32, Sw::kW, false, 0x0ull, false, false},
-    {51, "value", 0, 32, Sw::kW, false, 0x0ull, false, false},
-    {52, "value", 0, 32, Sw::kW, false, 0x0ull, false, false},
+    {47, "pos", 0, 64, Sw::kR, true, 0x0ull, false, false},
+    {48, "pos", 0, 64, Sw::kR, true, 0x0ull, false, false},
+    {49, "pos", 0, 64, Sw::kR, true, 0x0ull, false, false},
+    {50, "pos", 0, 64, Sw::kR, true, 0x0ull, false, false},
+    {51, "c", 0, 32, Sw::kR, true, 0x0ull, false, false},
+    {52, "speed", 0, 64, Sw::kR, true, 0x0ull, false, false},
     {53, "value", 0, 32, Sw::kW, false, 0x0ull, false, false},
     {54, "value", 0, 32, Sw::kW, false, 0x0ull, false, false},
     {55, "value", 0, 32, Sw::kW, false, 0x0ull, false, false},
     {56, "value", 0, 32, Sw::kW, false, 0x0ull, false, false},
     {57, "value", 0, 32, Sw::kW, false, 0x0ull, false, false},
     {58, "value", 0, 32, Sw::kW, false, 0x0ull, false, false},
-    {59, "lo", 0, 32, Sw::kW, false, 0x0ull, false, false},
-    {59, "hi", 32, 32, Sw::kW, false, 0x0ull, false, false},
-    {60, "arc", 0, 1, Sw::kW, false, 0x0ull, false, false},
-    {60, "plane", 1, 2, Sw::kW, false, 0x0ull, false, false},
-    {60, "ccw", 3, 1, Sw::kW, false, 0x0ull, false, false},
-    {60, "timed", 4, 1, Sw::kW, false, 0x0ull, false, false},
-    {61, "push", 0, 1, Sw::kW, false, 0x0ull, false, false},
+    {59, "value", 0, 32, Sw::kW, false, 0x0ull, false, false},
+    {60, "value", 0, 32, Sw::kW, false, 0x0ull, false, false},
+    {61, "value", 0, 32, Sw::kW, false, 0x0ull, false, false},
+    {62, "value", 0, 32, Sw::kW, false, 0x0ull, false, false},
+    {63, "value", 0, 32, Sw::kW, false, 0x0ull, false, false},
+    {64, "value", 0, 32, Sw::kW, false, 0x0ull, false, false},
+    {65, "lo", 0, 32, Sw::kW, false, 0x0ull, false, false},
+    {65, "hi", 32, 32, Sw::kW, false, 0x0ull, false, false},
+    {66, "arc", 0, 1, Sw::kW, false, 0x0ull, false, false},
+    {66, "plane", 1, 2, Sw::kW, false, 0x0ull, false, false},
+    {66, "ccw", 3, 1, Sw::kW, false, 0x0ull, false, false},
+    {66, "timed", 4, 1, Sw::kW, false, 0x0ull, false, false},
+    {67, "push", 0, 1, Sw::kW, false, 0x0ull, false, false},
+    {68, "value", 0, 32, Sw::kW, false, 0x0ull, false, false},
+    {69, "value", 0, 32, Sw::kW, false, 0x0ull, false, false},
+    {70, "value", 0, 32, Sw::kW, false, 0x0ull, false, false},
+    {71, "value", 0, 32, Sw::kW, false, 0x0ull, false, false},
 };
 
 // Byte addresses.
@@ -219,6 +247,7 @@ inline constexpr uint32_t kIdBuild = 0x8;
 inline constexpr uint32_t kIdWidths = 0xc;
 inline constexpr uint32_t kIdWidths2 = 0x10;
 inline constexpr uint32_t kIdClock = 0x14;
+inline constexpr uint32_t kIdProfile = 0x18;
 inline constexpr uint32_t kCtrl = 0x20;
 inline constexpr uint32_t kStatus = 0x24;
 inline constexpr uint32_t kEvents = 0x28;
@@ -251,6 +280,9 @@ inline constexpr uint32_t kSnapSpeed2 = 0xd8;
 inline constexpr uint32_t kSnapSpeed3 = 0xdc;
 inline constexpr uint32_t kSnapSpeed4 = 0xe0;
 inline constexpr uint32_t kSnapSpeed5 = 0xe4;
+inline constexpr uint32_t kProfQ = 0xf0;
+inline constexpr uint32_t kProfLen = 0xf8;
+inline constexpr uint32_t kProfCtrl = 0xfc;
 inline constexpr uint32_t kProbeCfg = 0x100;
 inline constexpr uint32_t kLatchCtrl = 0x104;
 inline constexpr uint32_t kLatchTime = 0x108;
@@ -260,6 +292,8 @@ inline constexpr uint32_t kLatchPos2 = 0x120;
 inline constexpr uint32_t kLatchPos3 = 0x128;
 inline constexpr uint32_t kLatchPos4 = 0x130;
 inline constexpr uint32_t kLatchPos5 = 0x138;
+inline constexpr uint32_t kProfLevel = 0x140;
+inline constexpr uint32_t kProfSpeed = 0x148;
 inline constexpr uint32_t kCmdDelta0 = 0x200;
 inline constexpr uint32_t kCmdDelta1 = 0x204;
 inline constexpr uint32_t kCmdDelta2 = 0x208;
@@ -275,6 +309,10 @@ inline constexpr uint32_t kCmdFeed = 0x22c;
 inline constexpr uint32_t kCmdAt = 0x230;
 inline constexpr uint32_t kCmdFlags = 0x238;
 inline constexpr uint32_t kCmdPush = 0x23c;
+inline constexpr uint32_t kCmdMvOps = 0x240;
+inline constexpr uint32_t kCmdMvTarget = 0x244;
+inline constexpr uint32_t kCmdMvEnd = 0x248;
+inline constexpr uint32_t kCmdMvMax = 0x24c;
 
 // regblock's hwif_in: what the hardware drives (hw-writable fields' next).
 struct HwifIn {
@@ -282,6 +320,7 @@ struct HwifIn {
     struct { uint64_t next = 0; } axes;
     struct { uint64_t next = 0; } core;
     struct { uint64_t next = 0; } bus;
+    struct { uint64_t next = 0; } profile;
     struct { uint64_t next = 0; } step_types;
     struct { uint64_t next = 0; } fifo_depth;
   } id_build;
@@ -299,6 +338,12 @@ struct HwifIn {
     struct { uint64_t next = 0; } hz;
   } id_clock;
   struct {
+    struct { uint64_t next = 0; } spd_w;
+    struct { uint64_t next = 0; } tick_w;
+    struct { uint64_t next = 0; } len_w;
+    struct { uint64_t next = 0; } lvl_w;
+  } id_profile;
+  struct {
     struct { uint64_t next = 0; } busy;
     struct { uint64_t next = 0; } fifo_empty;
     struct { uint64_t next = 0; } fifo_full;
@@ -309,6 +354,8 @@ struct HwifIn {
     struct { uint64_t next = 0; } snap_armed;
     struct { uint64_t next = 0; } latch_armed;
     struct { uint64_t next = 0; } waiting;
+    struct { uint64_t next = 0; } prof_busy;
+    struct { uint64_t next = 0; } wdog_stopping;
   } status;
   struct {
     struct { uint64_t next = 0; } overflow;
@@ -400,6 +447,12 @@ struct HwifIn {
   struct {
     struct { uint64_t next = 0; } pos;
   } latch_pos5;
+  struct {
+    struct { uint64_t next = 0; } c;
+  } prof_level;
+  struct {
+    struct { uint64_t next = 0; } speed;
+  } prof_speed;
 };
 
 // regblock's hwif_out: field values the hardware reads, strobes, interrupts.
@@ -473,6 +526,17 @@ struct HwifOut {
     struct { uint64_t value = 0; } arm;
   } snap_ctrl;
   struct {
+    struct { uint64_t value = 0; } lo;
+    struct { uint64_t value = 0; } hi;
+  } prof_q;
+  struct {
+    struct { uint64_t value = 0; } value;
+  } prof_len;
+  struct {
+    struct { uint64_t value = 0; } hold;
+    struct { uint64_t value = 0; } ovr;
+  } prof_ctrl;
+  struct {
     struct { uint64_t value = 0; } filter;
     struct { uint64_t value = 0; } falling;
     struct { uint64_t value = 0; } stop;
@@ -529,6 +593,18 @@ struct HwifOut {
   struct {
     struct { bool swmod = false; } push;
   } cmd_push;
+  struct {
+    struct { uint64_t value = 0; } value;
+  } cmd_mv_ops;
+  struct {
+    struct { uint64_t value = 0; } value;
+  } cmd_mv_target;
+  struct {
+    struct { uint64_t value = 0; } value;
+  } cmd_mv_end;
+  struct {
+    struct { uint64_t value = 0; } value;
+  } cmd_mv_max;
 };
 
 // One request on regblock's internal CPU interface (its cpuif_* signals).
@@ -612,6 +688,17 @@ class Block {
       uint64_t arm = 0x0ull;
     } snap_ctrl;
     struct {
+      uint64_t lo = 0x0ull;
+      uint64_t hi = 0x0ull;
+    } prof_q;
+    struct {
+      uint64_t value = 0x1ull;
+    } prof_len;
+    struct {
+      uint64_t hold = 0x0ull;
+      uint64_t ovr = 0x80ull;
+    } prof_ctrl;
+    struct {
       uint64_t filter = 0x0ull;
       uint64_t falling = 0x0ull;
       uint64_t stop = 0x0ull;
@@ -668,6 +755,18 @@ class Block {
     struct {
       uint64_t push = 0x0ull;
     } cmd_push;
+    struct {
+      uint64_t value = 0x0ull;
+    } cmd_mv_ops;
+    struct {
+      uint64_t value = 0x0ull;
+    } cmd_mv_target;
+    struct {
+      uint64_t value = 0x0ull;
+    } cmd_mv_end;
+    struct {
+      uint64_t value = 0x0ull;
+    } cmd_mv_max;
   };
   Storage q;  // after the last edge
 
@@ -715,6 +814,11 @@ class Block {
     o.snap_at.lo.value = q.snap_at.lo;
     o.snap_at.hi.value = q.snap_at.hi;
     o.snap_ctrl.arm.value = q.snap_ctrl.arm;
+    o.prof_q.lo.value = q.prof_q.lo;
+    o.prof_q.hi.value = q.prof_q.hi;
+    o.prof_len.value.value = q.prof_len.value;
+    o.prof_ctrl.hold.value = q.prof_ctrl.hold;
+    o.prof_ctrl.ovr.value = q.prof_ctrl.ovr;
     o.probe_cfg.filter.value = q.probe_cfg.filter;
     o.probe_cfg.falling.value = q.probe_cfg.falling;
     o.probe_cfg.stop.value = q.probe_cfg.stop;
@@ -738,6 +842,10 @@ class Block {
     o.cmd_flags.ccw.value = q.cmd_flags.ccw;
     o.cmd_flags.timed.value = q.cmd_flags.timed;
     o.cmd_push.push.swmod = false;
+    o.cmd_mv_ops.value.value = q.cmd_mv_ops.value;
+    o.cmd_mv_target.value.value = q.cmd_mv_target.value;
+    o.cmd_mv_end.value.value = q.cmd_mv_end.value;
+    o.cmd_mv_max.value.value = q.cmd_mv_max.value;
   }
 
   // One clock: the request and the hardware inputs give the response and
@@ -764,7 +872,7 @@ class Block {
       valid_rw = rd;
       const bool strb = rd;
       (void)strb;
-      data |= static_cast<uint32_t>(((0x0ull >> 0) & 0xffffull) << 0);
+      data |= static_cast<uint32_t>(((0x1ull >> 0) & 0xffffull) << 0);
       data |= static_cast<uint32_t>(((0x1ull >> 0) & 0xffffull) << 16);
     }
     if (a == 0x8) {  // id_build
@@ -775,6 +883,7 @@ class Block {
       data |= static_cast<uint32_t>(((in.id_build.axes.next >> 0) & 0xfull) << 0);
       data |= static_cast<uint32_t>(((in.id_build.core.next >> 0) & 0xfull) << 4);
       data |= static_cast<uint32_t>(((in.id_build.bus.next >> 0) & 0x3ull) << 8);
+      data |= static_cast<uint32_t>(((in.id_build.profile.next >> 0) & 0x1ull) << 10);
       data |= static_cast<uint32_t>(((in.id_build.step_types.next >> 0) & 0x7ull) << 12);
       data |= static_cast<uint32_t>(((in.id_build.fifo_depth.next >> 0) & 0xffffull) << 16);
     }
@@ -803,6 +912,16 @@ class Block {
       (void)strb;
       data |= static_cast<uint32_t>(((in.id_clock.hz.next >> 0) & 0xffffffffull) << 0);
     }
+    if (a == 0x18) {  // id_profile
+      valid_addr = true;
+      valid_rw = rd;
+      const bool strb = rd;
+      (void)strb;
+      data |= static_cast<uint32_t>(((in.id_profile.spd_w.next >> 0) & 0xffull) << 0);
+      data |= static_cast<uint32_t>(((in.id_profile.tick_w.next >> 0) & 0xffull) << 8);
+      data |= static_cast<uint32_t>(((in.id_profile.len_w.next >> 0) & 0xffull) << 16);
+      data |= static_cast<uint32_t>(((in.id_profile.lvl_w.next >> 0) & 0xffull) << 24);
+    }
     if (a == 0x20) {  // ctrl
       valid_addr = true;
       valid_rw = wr;
@@ -824,6 +943,8 @@ class Block {
       data |= static_cast<uint32_t>(((in.status.snap_armed.next >> 0) & 0x1ull) << 7);
       data |= static_cast<uint32_t>(((in.status.latch_armed.next >> 0) & 0x1ull) << 8);
       data |= static_cast<uint32_t>(((in.status.waiting.next >> 0) & 0x1ull) << 9);
+      data |= static_cast<uint32_t>(((in.status.prof_busy.next >> 0) & 0x1ull) << 10);
+      data |= static_cast<uint32_t>(((in.status.wdog_stopping.next >> 0) & 0x1ull) << 11);
     }
     if (a == 0x28) {  // events
       valid_addr = true;
@@ -1120,6 +1241,35 @@ class Block {
       data |= static_cast<uint32_t>(((in.snap_speed5.period.next >> 0) & 0x7fffffffull) << 0);
       data |= static_cast<uint32_t>(((in.snap_speed5.neg.next >> 0) & 0x1ull) << 31);
     }
+    if (a == 0xf0) {  // prof_q word 0
+      valid_addr = true;
+      valid_rw = true;
+      const bool strb = rq.req;
+      (void)strb;
+      data |= static_cast<uint32_t>(((q.prof_q.lo >> 0) & 0xffffffffull) << 0);
+    }
+    if (a == 0xf4) {  // prof_q word 1
+      valid_addr = true;
+      valid_rw = true;
+      const bool strb = rq.req;
+      (void)strb;
+      data |= static_cast<uint32_t>(((q.prof_q.hi >> 0) & 0xffffffffull) << 0);
+    }
+    if (a == 0xf8) {  // prof_len
+      valid_addr = true;
+      valid_rw = true;
+      const bool strb = rq.req;
+      (void)strb;
+      data |= static_cast<uint32_t>(((q.prof_len.value >> 0) & 0xffffffffull) << 0);
+    }
+    if (a == 0xfc) {  // prof_ctrl
+      valid_addr = true;
+      valid_rw = true;
+      const bool strb = rq.req;
+      (void)strb;
+      data |= static_cast<uint32_t>(((q.prof_ctrl.hold >> 0) & 0x1ull) << 0);
+      data |= static_cast<uint32_t>(((q.prof_ctrl.ovr >> 0) & 0x1ffull) << 16);
+    }
     if (a == 0x100) {  // probe_cfg
       valid_addr = true;
       valid_rw = true;
@@ -1233,6 +1383,27 @@ class Block {
       (void)strb;
       data |= static_cast<uint32_t>(((in.latch_pos5.pos.next >> 32) & 0xffffffffull) << 0);
     }
+    if (a == 0x140) {  // prof_level
+      valid_addr = true;
+      valid_rw = rd;
+      const bool strb = rd;
+      (void)strb;
+      data |= static_cast<uint32_t>(((in.prof_level.c.next >> 0) & 0xffffffffull) << 0);
+    }
+    if (a == 0x148) {  // prof_speed word 0
+      valid_addr = true;
+      valid_rw = rd;
+      const bool strb = rd;
+      (void)strb;
+      data |= static_cast<uint32_t>(((in.prof_speed.speed.next >> 0) & 0xffffffffull) << 0);
+    }
+    if (a == 0x14c) {  // prof_speed word 1
+      valid_addr = true;
+      valid_rw = rd;
+      const bool strb = rd;
+      (void)strb;
+      data |= static_cast<uint32_t>(((in.prof_speed.speed.next >> 32) & 0xffffffffull) << 0);
+    }
     if (a == 0x200) {  // cmd_delta0
       valid_addr = true;
       valid_rw = wr;
@@ -1329,6 +1500,30 @@ class Block {
       const bool strb = wr;
       (void)strb;
       o.cmd_push.push.swmod = strb && rq.is_wr && (be & 0x1ull) != 0;
+    }
+    if (a == 0x240) {  // cmd_mv_ops
+      valid_addr = true;
+      valid_rw = wr;
+      const bool strb = wr;
+      (void)strb;
+    }
+    if (a == 0x244) {  // cmd_mv_target
+      valid_addr = true;
+      valid_rw = wr;
+      const bool strb = wr;
+      (void)strb;
+    }
+    if (a == 0x248) {  // cmd_mv_end
+      valid_addr = true;
+      valid_rw = wr;
+      const bool strb = wr;
+      (void)strb;
+    }
+    if (a == 0x24c) {  // cmd_mv_max
+      valid_addr = true;
+      valid_rw = wr;
+      const bool strb = wr;
+      (void)strb;
     }
     // Field logic.
     if (wr && a == 0x20) {
@@ -1461,6 +1656,21 @@ class Block {
     } else if (true) {
       d_.snap_ctrl.arm = (0) & 0x1ull;
     }
+    if (wr && a == 0xf0) {
+      d_.prof_q.lo = ((q.prof_q.lo & ~((be >> 0) & 0xffffffffull)) | (((wd >> 0) & 0xffffffffull) & ((be >> 0) & 0xffffffffull))) & 0xffffffffull;
+    }
+    if (wr && a == 0xf4) {
+      d_.prof_q.hi = ((q.prof_q.hi & ~((be >> 0) & 0xffffffffull)) | (((wd >> 0) & 0xffffffffull) & ((be >> 0) & 0xffffffffull))) & 0xffffffffull;
+    }
+    if (wr && a == 0xf8) {
+      d_.prof_len.value = ((q.prof_len.value & ~((be >> 0) & 0xffffffffull)) | (((wd >> 0) & 0xffffffffull) & ((be >> 0) & 0xffffffffull))) & 0xffffffffull;
+    }
+    if (wr && a == 0xfc) {
+      d_.prof_ctrl.hold = ((q.prof_ctrl.hold & ~((be >> 0) & 0x1ull)) | (((wd >> 0) & 0x1ull) & ((be >> 0) & 0x1ull))) & 0x1ull;
+    }
+    if (wr && a == 0xfc) {
+      d_.prof_ctrl.ovr = ((q.prof_ctrl.ovr & ~((be >> 16) & 0x1ffull)) | (((wd >> 16) & 0x1ffull) & ((be >> 16) & 0x1ffull))) & 0x1ffull;
+    }
     if (wr && a == 0x100) {
       d_.probe_cfg.filter = ((q.probe_cfg.filter & ~((be >> 0) & 0xffffull)) | (((wd >> 0) & 0xffffull) & ((be >> 0) & 0xffffull))) & 0xffffull;
     }
@@ -1531,6 +1741,18 @@ class Block {
     }
     if (wr && a == 0x23c) {
       d_.cmd_push.push = ((q.cmd_push.push & ~((be >> 0) & 0x1ull)) | (((wd >> 0) & 0x1ull) & ((be >> 0) & 0x1ull))) & 0x1ull;
+    }
+    if (wr && a == 0x240) {
+      d_.cmd_mv_ops.value = ((q.cmd_mv_ops.value & ~((be >> 0) & 0xffffffffull)) | (((wd >> 0) & 0xffffffffull) & ((be >> 0) & 0xffffffffull))) & 0xffffffffull;
+    }
+    if (wr && a == 0x244) {
+      d_.cmd_mv_target.value = ((q.cmd_mv_target.value & ~((be >> 0) & 0xffffffffull)) | (((wd >> 0) & 0xffffffffull) & ((be >> 0) & 0xffffffffull))) & 0xffffffffull;
+    }
+    if (wr && a == 0x248) {
+      d_.cmd_mv_end.value = ((q.cmd_mv_end.value & ~((be >> 0) & 0xffffffffull)) | (((wd >> 0) & 0xffffffffull) & ((be >> 0) & 0xffffffffull))) & 0xffffffffull;
+    }
+    if (wr && a == 0x24c) {
+      d_.cmd_mv_max.value = ((q.cmd_mv_max.value & ~((be >> 0) & 0xffffffffull)) | (((wd >> 0) & 0xffffffffull) & ((be >> 0) & 0xffffffffull))) & 0xffffffffull;
     }
     const bool err = rq.req && (!valid_addr || !valid_rw);
     rsp.rd_ack = rd;

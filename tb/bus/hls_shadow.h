@@ -9,7 +9,8 @@
 //   - both: after the edge, out_a_o and out_b_o of every axis, irq_o, and
 //     motion_top's done_o; and inside motion_soc (read through
 //     tb/bus/motion_soc_probe.vlt) the FIFO's count and head, TIME and the
-//     watchdog's count.
+//     watchdog's count; with the feed profile (PROFILE = 1) also the moves'
+//     count and head and the profile's feed word.
 // The first difference ends the run; it is reported with its clock.
 #pragma once
 
@@ -51,7 +52,7 @@ class ShadowBase {
   }
   // The RTL's internal values as motion_soc's registers hold them.
   struct Inside {
-    uint64_t cnt, head, time, wdog_left;
+    uint64_t cnt, head, time, wdog_left, mcnt, mhead, prof_feed;
   };
   template <class Soc, class M>
   void compare_pins(const Soc& soc, const M& m, bool done, const Inside& in, uint64_t clock,
@@ -62,15 +63,19 @@ class ShadowBase {
         differ(clock, "u_soc.cnt_q", soc.fifo_count(), in.cnt) ||
         differ(clock, "u_soc.head_q", soc.fifo_head(), in.head) ||
         differ(clock, "u_soc.time_q", soc.time(), in.time) ||
-        differ(clock, "u_soc.wdog_left_q", soc.wdog_left(), in.wdog_left);
+        differ(clock, "u_soc.wdog_left_q", soc.wdog_left(), in.wdog_left) ||
+        differ(clock, "u_soc.mcnt_q", soc.move_count(), in.mcnt) ||
+        differ(clock, "u_soc.mhead_q", soc.move_head(), in.mhead) ||
+        differ(clock, "u_soc.prof_feed", soc.profile_feed(), in.prof_feed);
   }
   ShadowMismatch mm_;
 };
 
-template <class Cfg>
-class AxilShadow : public ShadowBase<AxilShadow<Cfg>> {
+// PROFILE: the tops with the feed profile (SocOf<Cfg>::AxilProf, WbProf).
+template <class Cfg, int PROFILE = 0>
+class AxilShadow : public ShadowBase<AxilShadow<Cfg, PROFILE>> {
  public:
-  using Soc = hls::MotionSoc<Cfg, 16, 0>;
+  using Soc = hls::MotionSoc<Cfg, 16, 0, 50000000, PROFILE>;
   template <class M>
   void before_edge(const M& m) {
     hls::AxilIn in;
@@ -101,10 +106,14 @@ class AxilShadow : public ShadowBase<AxilShadow<Cfg>> {
         (o.rvalid && this->differ(clock, "s_axil_rresp_o", o.rresp, m.s_axil_rresp_o)) ||
         (o.rvalid && this->differ(clock, "s_axil_rdata_o", o.rdata, m.s_axil_rdata_o));
     const auto* r = m.rootp;
-    const typename ShadowBase<AxilShadow<Cfg>>::Inside in{
-        r->motion_soc_axil__DOT__u_soc__DOT__cnt_q, r->motion_soc_axil__DOT__u_soc__DOT__head_q,
+    const typename ShadowBase<AxilShadow<Cfg, PROFILE>>::Inside in{
+        r->motion_soc_axil__DOT__u_soc__DOT__cnt_q,
+        r->motion_soc_axil__DOT__u_soc__DOT__head_q,
         r->motion_soc_axil__DOT__u_soc__DOT__time_q,
-        r->motion_soc_axil__DOT__u_soc__DOT__wdog_left_q};
+        r->motion_soc_axil__DOT__u_soc__DOT__wdog_left_q,
+        r->motion_soc_axil__DOT__u_soc__DOT__mcnt_q,
+        r->motion_soc_axil__DOT__u_soc__DOT__mhead_q,
+        r->motion_soc_axil__DOT__u_soc__DOT__prof_feed};
     this->compare_pins(face_.soc(), m, done, in, clock, (1u << Cfg::AXES) - 1);
   }
 
@@ -112,10 +121,10 @@ class AxilShadow : public ShadowBase<AxilShadow<Cfg>> {
   hls::MotionSocAxil<Soc> face_;
 };
 
-template <class Cfg>
-class WbShadow : public ShadowBase<WbShadow<Cfg>> {
+template <class Cfg, int PROFILE = 0>
+class WbShadow : public ShadowBase<WbShadow<Cfg, PROFILE>> {
  public:
-  using Soc = hls::MotionSoc<Cfg, 16, 1>;
+  using Soc = hls::MotionSoc<Cfg, 16, 1, 50000000, PROFILE>;
   // The pins are settled (clk_i low): Wishbone answers in this clock.
   template <class M>
   void before_edge(const M& m) {
@@ -142,9 +151,11 @@ class WbShadow : public ShadowBase<WbShadow<Cfg>> {
   void after_edge(const M& m, bool done, uint64_t clock) {
     clock_ = clock;
     const auto* r = m.rootp;
-    const typename ShadowBase<WbShadow<Cfg>>::Inside in{
-        r->motion_soc_wb__DOT__u_soc__DOT__cnt_q, r->motion_soc_wb__DOT__u_soc__DOT__head_q,
-        r->motion_soc_wb__DOT__u_soc__DOT__time_q, r->motion_soc_wb__DOT__u_soc__DOT__wdog_left_q};
+    const typename ShadowBase<WbShadow<Cfg, PROFILE>>::Inside in{
+        r->motion_soc_wb__DOT__u_soc__DOT__cnt_q,    r->motion_soc_wb__DOT__u_soc__DOT__head_q,
+        r->motion_soc_wb__DOT__u_soc__DOT__time_q,   r->motion_soc_wb__DOT__u_soc__DOT__wdog_left_q,
+        r->motion_soc_wb__DOT__u_soc__DOT__mcnt_q,   r->motion_soc_wb__DOT__u_soc__DOT__mhead_q,
+        r->motion_soc_wb__DOT__u_soc__DOT__prof_feed};
     this->compare_pins(face_.soc(), m, done, in, clock, (1u << Cfg::AXES) - 1);
   }
 

@@ -15,14 +15,23 @@
 // waits for irq_o, and reads FIFO_LEVEL again. At the end it reads EVENTS:
 // an overflow or refused push there, or any error response, is a lost
 // command and fails the run.
+//
+// With the feed profile (SocSetup::profile, a PROFILE = 1 build): PROF_Q and
+// PROF_LEN before the first command, and each command's profile move
+// (CMD_MV_OPS, CMD_MV_TARGET, CMD_MV_END, CMD_MV_MAX, only what changes)
+// staged with it: the source gives the move with next_move(ProfileWords&)
+// after each command.
 #pragma once
 
 #include <array>
 #include <cstdint>
+#include <type_traits>
+#include <utility>
 
 #include "hls/gen/motion_soc_regs.h"
 #include "models/motion_top_model.h"
 #include "tb/bus/bus_master.h"
+#include "tb/lockstep/profile_feed.h"
 
 namespace hwinterp::tb::bus {
 
@@ -57,6 +66,9 @@ struct SocSetup {
   uint32_t feed = 0;  // FEED (feed_i): 2^FEED_W is full feed
   uint32_t step_len = 0, step_space = 0, dir_setup = 0, dir_hold = 0;
   uint32_t fifo_low = 4;  // FIFO_LOW: the low-water mark the host sleeps on
+  bool profile = false;   // stage each command's profile move (a PROFILE = 1 build)
+  uint64_t prof_q = 0;    // PROF_Q
+  uint32_t prof_len = 1;  // PROF_LEN
 };
 
 struct HostCounts {
@@ -80,6 +92,11 @@ class CommandStager {
 
   template <class Put>
   void stage(const models::MotionCommand& c, Put&& put) {
+    stage(c, nullptr, put);
+  }
+  // ... with the command's profile move (mv: null for none).
+  template <class Put>
+  void stage(const models::MotionCommand& c, const ProfileWords* mv, Put&& put) {
     const auto write = [&](size_t reg, uint32_t addr, uint32_t v) {
       if (staged_[reg] == v) return;
       staged_[reg] = v;
@@ -100,13 +117,27 @@ class CommandStager {
                            (static_cast<uint32_t>(c.plane & 3) << kPlaneLsb) |
                            (c.ccw ? kCcwBit : 0u);
     write(12, regs::kCmdFlags, flags);
+    if (mv) {
+      write(13, regs::kCmdMvOps, static_cast<uint32_t>(mv->ops));
+      write(14, regs::kCmdMvTarget, mv->target);
+      write(15, regs::kCmdMvEnd, mv->end);
+      write(16, regs::kCmdMvMax, mv->max);
+    }
     put(regs::kCmdPush, 1u);
   }
 
  private:
   int axes_;
-  std::array<uint32_t, 13> staged_{};
+  std::array<uint32_t, 17> staged_{};
 };
+
+// A source that gives profile moves: next_move(ProfileWords&).
+template <class Src, class = void>
+struct HasMoves : std::false_type {};
+template <class Src>
+struct HasMoves<
+    Src, std::void_t<decltype(std::declval<Src&>().next_move(std::declval<ProfileWords&>()))>>
+    : std::true_type {};
 
 // Src: bool next(models::MotionCommand&) per command (false at the end).
 template <class Src>
@@ -121,6 +152,11 @@ class SocHost {
     put_write(regs::kStepType, 0);  // step/dir on every axis
     put_write(regs::kFifoLow, s.fifo_low);
     put_write(regs::kIrqEn, kLowWater);
+    if (s.profile) {
+      put_write(regs::kProfQ, static_cast<uint32_t>(s.prof_q));
+      put_write(regs::kProfQ + 4, static_cast<uint32_t>(s.prof_q >> 32));
+      put_write(regs::kProfLen, s.prof_len);
+    }
   }
 
   // The next transaction, if any now (false: nothing until a response, the
@@ -196,13 +232,22 @@ class SocHost {
       q_[n_++] = BusTxn{false, regs::kEvents, 0, 0xF};
       return true;
     }
-    stager_.stage(c, [this](uint32_t addr, uint32_t v) { put_write(addr, v); });
+    const auto put = [this](uint32_t addr, uint32_t v) { put_write(addr, v); };
+    if constexpr (HasMoves<Src>::value) {
+      if (setup_.profile) {
+        ProfileWords w;
+        if (!src_.next_move(w)) w = ProfileWords{};  // the planner has a move for each command
+        stager_.stage(c, &w, put);
+        return true;
+      }
+    }
+    stager_.stage(c, put);
     return true;
   }
 
   Src& src_;
   SocSetup setup_;
-  std::array<BusTxn, 16> q_{};  // this command's transactions
+  std::array<BusTxn, 24> q_{};  // this command's transactions
   size_t n_ = 0, i_ = 0;
   CommandStager stager_;
   uint32_t credit_ = 0;

@@ -52,8 +52,9 @@ int run_gcode(int argc, char** argv, int first) {
       .option("mode", "systemc|direct", "lockstep mode", "systemc")
       .option("bus", "axi4lite|wishbone",
               "then run the program again through motion_soc's register interface (a bus "
-              "master writing each command into its FIFO) and require the lockstep run's "
-              "lattice points and end points (docs/soc.md)")
+              "master writing each command into its FIFO; with a profile, each command's "
+              "planned move too, into a motion_soc built with the feed profile) and require "
+              "the lockstep run's lattice points and end points (docs/soc.md)")
       .option("bus-waits", "N",
               "with --bus: random wait states, 0..N clocks, on the master's "
               "valid and ready signals",
@@ -135,10 +136,11 @@ int run_gcode(int argc, char** argv, int first) {
     if (setup.machine.profile == gcode::ProfileKind::kOff)
       throw UsageError("--feed-override: the override is the feed profile's; the profile is off");
   }
-  if (!setup.bus.empty() && setup.machine.profile != gcode::ProfileKind::kOff)
-    throw UsageError(std::string("--bus ") + setup.bus + ": motion_soc has no feed profile yet; " +
-                     "run it with --profile off (the machine's profile is " +
-                     gcode::profile_name(setup.machine.profile) + ")");
+  if (!setup.bus.empty() && setup.machine.profile != gcode::ProfileKind::kOff &&
+      (args.given("feed-hold") || args.given("feed-override")))
+    throw UsageError(std::string("--bus ") + setup.bus +
+                     ": the bus run takes the profile's planned moves only; give --feed-hold and "
+                     "--feed-override without --bus");
   if (args.given("variant")) setup.variant = args.str("variant");
   gcode::part_program_variant(setup);  // a bad --variant stops here
 

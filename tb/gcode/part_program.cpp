@@ -310,6 +310,84 @@ Kinematics kinematics_of(const tb::KinematicsMonitor& k, const Machine& m) {
   return out;
 }
 
+// The machine's limits, within the estimator's tolerance, on every axis and
+// the path: one failure line per quantity above its limit (a trapezoid
+// limits the acceleration only: its jerk is not checked).
+std::vector<std::string> limit_failures(const Kinematics& k, ProfileKind kind,
+                                        const std::string& prefix) {
+  std::vector<std::string> out;
+  for (const KinematicRow& row : k.rows) {
+    const std::pair<const char*, const KinematicPeak*> peaks[] = {
+        {"speed", &row.speed}, {"acceleration", &row.accel}, {"jerk", &row.jerk}};
+    for (const auto& [what, p] : peaks)
+      if (std::isfinite(p->limit) && p->max > p->limit + p->tolerance &&
+          !(kind == ProfileKind::kTrapezoid && p == &row.jerk))
+        out.push_back(prefix + row.name + " " + what + " " + fmt("%.6g", p->max) +
+                      " above its limit " + fmt("%.6g", p->limit) + " + " +
+                      fmt("%.3g", p->tolerance) + " at " + fmt("%.4f", p->at_s) + " s");
+  }
+  return out;
+}
+
+// The feed profile's moves of a program, one per command in order: a
+// planner on its own pass over the program (its registers from the limits
+// of the axes the program moves), a window of commands ahead.
+class PlannedMoves {
+ public:
+  PlannedMoves(const PartProgramSetup& setup, const tb::VariantSpec& l,
+               const MotionWidths& widths) {
+    uint32_t moved = 0;  // the axes the program moves: their limits set the profile's
+    {
+      auto src = open_source(setup);
+      MotionCompiler pass(*src, setup.machine, widths, setup.feed_mode, setup.program);
+      models::MotionCommand mc;
+      while (pass.next(mc)) moved |= motion_moved_axes(mc, l.axes);
+    }
+    planner_ = std::make_unique<ProfilePlanner>(
+        setup.machine, l.axes, tb::feed_profile_build(static_cast<double>(setup.machine.clock_hz)),
+        setup.profile_window, l.feed_w, moved);
+    source_ = open_source(setup);
+    compiler_ = std::make_unique<MotionCompiler>(*source_, setup.machine, widths, setup.feed_mode,
+                                                 setup.program);
+  }
+  const ProfilePlanner& planner() const { return *planner_; }
+  // The next command's move (false: the program ended).
+  bool next(tb::ProfileWords& w) {
+    ProfileCommand pc;
+    while (!planner_->pop(pc)) {
+      if (finished_) return false;
+      models::MotionCommand mc;
+      if (compiler_->next(mc)) {
+        planner_->push(mc, compiler_->info().number == 1 && compiler_->move().stop_before);
+      } else {
+        planner_->finish();
+        finished_ = true;
+      }
+    }
+    w = {pc.ops, pc.target, pc.end, pc.max};
+    return true;
+  }
+
+ private:
+  std::unique_ptr<ProfilePlanner> planner_;
+  std::unique_ptr<MoveSource> source_;
+  std::unique_ptr<MotionCompiler> compiler_;
+  bool finished_ = false;
+};
+
+// The bus host's source with the profile: the program's commands (feed word
+// 0: motion_top follows the profile) and each command's move.
+struct ProfiledSource {
+  Program& prog;
+  PlannedMoves& moves;
+  bool next(models::MotionCommand& c) {
+    if (!prog.next(c)) return false;
+    c.feed = 0;
+    return true;
+  }
+  bool next_move(tb::ProfileWords& w) { return moves.next(w); }
+};
+
 // The lockstep run's step events for the bus run to meet, passed on to the
 // program's own observer.
 class Recorder final : public tb::MoveObserver {
@@ -347,11 +425,26 @@ struct BusSink {
   }
 };
 
-template <class Cfg>
-tb::bus::SocRunResult run_soc_of(const std::string& bus, Program& src, BusSink& sink,
+template <class Cfg, class Src>
+tb::bus::SocRunResult run_soc_of(const std::string& bus, Src& src, BusSink& sink,
                                  const tb::bus::SocSetup& s, const tb::bus::WaitStates& w,
                                  uint64_t drain, uint64_t max_clocks) {
   using Soc = SocOf<Cfg>;
+  if (s.profile) {  // the tops with the feed profile (PROFILE=1)
+    if constexpr (Soc::kProfile) {
+      if (bus == "axi4lite") {
+        tb::bus::AxilShadow<Cfg, 1> hls;
+        return tb::bus::run_soc<typename Soc::AxilProf, tb::bus::Axi4LiteMaster, Soc>(
+            src, s, sink, hls, w, drain, max_clocks);
+      }
+      tb::bus::WbShadow<Cfg, 1> hls;
+      return tb::bus::run_soc<typename Soc::WbProf, tb::bus::WishboneMaster, Soc>(
+          src, s, sink, hls, w, drain, max_clocks);
+    }
+    throw cli::UsageError(
+        "--bus --profile: no motion_soc build with the feed profile at these "
+        "widths (FEED_W must be 24)");
+  }
   if (bus == "axi4lite") {
     tb::bus::AxilShadow<Cfg> hls;
     return tb::bus::run_soc<typename Soc::Axil, tb::bus::Axi4LiteMaster, Soc>(src, s, sink, hls, w,
@@ -366,9 +459,10 @@ tb::bus::SocRunResult run_soc_of(const std::string& bus, Program& src, BusSink& 
 BusCompare run_bus(const PartProgramSetup& setup, const tb::VariantSpec& l,
                    const MotionWidths& widths, const tb::bus::LatticeRecord& record,
                    const models::LatticePoint& lockstep_end, uint64_t lockstep_clocks) {
+  const bool profiled = setup.machine.profile != ProfileKind::kOff;
   auto prog = std::make_shared<Program>(open_source(setup), setup.machine, widths, setup.feed_mode,
                                         setup.program, nullptr, nullptr, nullptr,
-                                        setup.kinematics_window_s, /*profiled=*/false);
+                                        setup.kinematics_window_s, profiled);
   tb::bus::LatticeCheck check(record);
   BusSink sink{*prog, check};
   tb::bus::SocSetup s;
@@ -379,6 +473,15 @@ BusCompare run_bus(const PartProgramSetup& setup, const tb::VariantSpec& l,
   s.step_space = static_cast<uint32_t>(t.step_space);
   s.dir_setup = static_cast<uint32_t>(t.dir_setup);
   s.dir_hold = static_cast<uint32_t>(t.dir_hold);
+  // With the profile: its registers and each command's move, planned as
+  // for the lockstep run.
+  std::unique_ptr<PlannedMoves> moves;
+  if (profiled) {
+    moves = std::make_unique<PlannedMoves>(setup, l, widths);
+    s.profile = true;
+    s.prof_q = moves->planner().registers().q;
+    s.prof_len = moves->planner().registers().len;
+  }
   const tb::bus::WaitStates waits{setup.bus_waits, 1};
   // No step for this long after the last completed command: the end (every
   // step/dir timing twice, and some).
@@ -390,21 +493,32 @@ BusCompare run_bus(const PartProgramSetup& setup, const tb::VariantSpec& l,
       64 * (record.done_at().size() + 1) * (16 + 4 * uint64_t{setup.bus_waits}) + 100000;
   tb::bus::SocRunResult r;
   bool found = false;
-#define HWINTERP_RUN_SOC(v)                                                       \
-  if (!found && l.variant == #v) {                                                \
-    r = run_soc_of<v##_cfg>(setup.bus, *prog, sink, s, waits, drain, max_clocks); \
-    found = true;                                                                 \
+#define HWINTERP_RUN_SOC(v)                                                         \
+  if (!found && l.variant == #v) {                                                  \
+    if (moves) {                                                                    \
+      ProfiledSource src{*prog, *moves};                                            \
+      r = run_soc_of<v##_cfg>(setup.bus, src, sink, s, waits, drain, max_clocks);   \
+    } else {                                                                        \
+      r = run_soc_of<v##_cfg>(setup.bus, *prog, sink, s, waits, drain, max_clocks); \
+    }                                                                               \
+    found = true;                                                                   \
   }
   HWINTERP_SOC_VARIANTS(HWINTERP_RUN_SOC)
 #undef HWINTERP_RUN_SOC
   if (!found) throw cli::UsageError("--bus: no motion_soc build of variant " + l.variant);
   prog->flush_rows();
+  prog->kinematics().finish(r.clocks);
 
   BusCompare b;
   b.ran = true;
   b.bus = setup.bus;
   b.build = std::string(setup.bus == "axi4lite" ? "motion_soc_axil" : "motion_soc_wb") + " at " +
-            l.variant + "'s widths, FIFO_DEPTH 16";
+            l.variant + "'s widths, FIFO_DEPTH 16" + (profiled ? ", PROFILE 1" : "");
+  if (profiled) {
+    b.profiled = true;
+    b.limit_failures = limit_failures(kinematics_of(prog->kinematics(), setup.machine),
+                                      setup.machine.profile, "bus run: ");
+  }
   b.clocks = r.clocks;
   b.writes = r.host.writes;
   b.reads = r.host.reads;
@@ -433,7 +547,8 @@ BusCompare run_bus(const PartProgramSetup& setup, const tb::VariantSpec& l,
   b.passed = check.same() && !r.timed_out && r.shadow.clock == 0 && r.host.errors == 0 &&
              r.host.events_read && (r.host.events & tb::bus::kLost) == 0 &&
              r.completed == r.host.pushes && r.host.pushes == prog->compiler().totals().commands &&
-             b.end == b.lockstep_end && b.end_mismatches.empty() && prog->all_rows_written();
+             b.end == b.lockstep_end && b.end_mismatches.empty() && prog->all_rows_written() &&
+             b.limit_failures.empty();
   return b;
 }
 
@@ -472,46 +587,17 @@ PartProgramRun run_part_program(const PartProgramSetup& setup) {
   // The feed profile: a planner on its own pass over the program, running a
   // window of commands ahead of the engine, feeding the profile's two faces,
   // whose word drives feed_i.
-  std::unique_ptr<ProfilePlanner> planner;
-  std::unique_ptr<MoveSource> plan_source;
-  std::unique_ptr<MotionCompiler> plan_compiler;
+  std::unique_ptr<PlannedMoves> moves;
   std::unique_ptr<tb::ProfileFeed> profile_feed;
-  bool plan_finished = false;
   if (profiled) {
     if (l.feed_w != tb::kProfileFeedW)
       throw cli::UsageError("--profile: the feed profile's build gives " +
                             std::to_string(tb::kProfileFeedW) + "-bit feed words; " + l.variant +
                             " takes FEED_W " + std::to_string(l.feed_w));
-    uint32_t moved = 0;  // the axes the program moves: their limits set the profile's
-    {
-      auto src = open_source(setup);
-      MotionCompiler pass(*src, setup.machine, widths, setup.feed_mode, setup.program);
-      models::MotionCommand mc;
-      while (pass.next(mc)) moved |= motion_moved_axes(mc, l.axes);
-    }
-    planner = std::make_unique<ProfilePlanner>(
-        setup.machine, l.axes, tb::feed_profile_build(static_cast<double>(setup.machine.clock_hz)),
-        setup.profile_window, l.feed_w, moved);
-    plan_source = open_source(setup);
-    plan_compiler = std::make_unique<MotionCompiler>(*plan_source, setup.machine, widths,
-                                                     setup.feed_mode, setup.program);
+    moves = std::make_unique<PlannedMoves>(setup, l, widths);
     profile_feed = std::make_unique<tb::ProfileFeed>(
-        planner->registers().q, planner->registers().len, [&](tb::ProfileWords& w) {
-          ProfileCommand pc;
-          while (!planner->pop(pc)) {
-            if (plan_finished) return false;
-            models::MotionCommand mc;
-            if (plan_compiler->next(mc)) {
-              planner->push(mc,
-                            plan_compiler->info().number == 1 && plan_compiler->move().stop_before);
-            } else {
-              planner->finish();
-              plan_finished = true;
-            }
-          }
-          w = {pc.ops, pc.target, pc.end, pc.max};
-          return true;
-        });
+        moves->planner().registers().q, moves->planner().registers().len,
+        [&](tb::ProfileWords& w) { return moves->next(w); });
   }
 
   if (profile_feed && !setup.feed_override.empty())
@@ -572,14 +658,15 @@ PartProgramRun run_part_program(const PartProgramSetup& setup) {
   r.kinematics = kinematics_of(prog->kinematics(), setup.machine);
   r.all_rows_written = prog->all_rows_written();
   if (profiled) {
-    const models::ProfileRegisters& g = planner->registers();
+    const ProfilePlanner& planner = moves->planner();
+    const models::ProfileRegisters& g = planner.registers();
     r.profile = {true,
                  profile_name(setup.machine.profile),
                  g.q,
                  g.len,
                  g.level_speed,
-                 planner->accel(),
-                 planner->jerk(),
+                 planner.accel(),
+                 planner.jerk(),
                  g.max_level,
                  setup.profile_window,
                  profile_feed->moves_taken(),
@@ -606,18 +693,8 @@ PartProgramRun run_part_program(const PartProgramSetup& setup) {
           "the feed profile came to rest with motion_top still busy: the step/dir stage "
           "stalled the engine behind the profile's distance");
     // The machine's limits, within the estimator's tolerance, on every axis and the path.
-    for (const KinematicRow& row : r.kinematics.rows) {
-      const std::pair<const char*, const KinematicPeak*> peaks[] = {
-          {"speed", &row.speed}, {"acceleration", &row.accel}, {"jerk", &row.jerk}};
-      for (const auto& [what, p] : peaks)
-        // A trapezoid limits the acceleration only: its jerk is not checked.
-        if (std::isfinite(p->limit) && p->max > p->limit + p->tolerance &&
-            !(setup.machine.profile == ProfileKind::kTrapezoid && p == &row.jerk))
-          r.profile_failures.push_back(row.name + " " + what + " " + fmt("%.6g", p->max) +
-                                       " above its limit " + fmt("%.6g", p->limit) + " + " +
-                                       fmt("%.3g", p->tolerance) + " at " + fmt("%.4f", p->at_s) +
-                                       " s");
-    }
+    for (std::string& f : limit_failures(r.kinematics, setup.machine.profile, ""))
+      r.profile_failures.push_back(std::move(f));
   }
   r.passed = tb::all_passed(r.results) && !r.results.empty() && r.results.front().completed &&
              r.end_mismatches.empty() && r.all_rows_written && r.profile_failures.empty();
@@ -719,12 +796,17 @@ std::string summary_table(const PartProgramSetup& setup, const PartProgramRun& r
     s.add_row(
         {"bus: HLS face (hls/motion_soc.h) against the RTL",
          b.hls_mismatch_clock == 0
-             ? std::string(
-                   "the same bus pins, step pins and FIFO, time and watchdog counts on all ") +
-                   std::to_string(b.clocks) + " clocks"
+             ? std::string("the same bus pins, step pins and FIFO, time and watchdog counts") +
+                   (b.profiled ? ", the moves' FIFO and the profile's feed word" : "") +
+                   " on all " + std::to_string(b.clocks) + " clocks"
              : "differs at clock " + std::to_string(b.hls_mismatch_clock) + ": " +
                    b.hls_mismatch_what + " HLS " + std::to_string(b.hls_mismatch_hls) + " RTL " +
                    std::to_string(b.hls_mismatch_rtl)});
+    if (b.profiled)
+      s.add_row({"bus: kinematics with the feed profile",
+                 b.limit_failures.empty() ? std::string("within the machine's limits")
+                                          : std::to_string(b.limit_failures.size()) +
+                                                " failures: " + b.limit_failures.front()});
     s.add_row({"bus: end point (lockstep)",
                point(b.end) + " (" + point(b.lockstep_end) + ")" +
                    (b.timed_out ? ", TIMED OUT" : "") +
@@ -858,6 +940,8 @@ Json report_json(const PartProgramSetup& setup, const PartProgramRun& run) {
     j["max_contour_error_mm"] = b.contour.mm;
     j["timed_out"] = b.timed_out;
     j["hls_mismatch_clock"] = b.hls_mismatch_clock;
+    j["profile"] = b.profiled;
+    if (b.profiled) j["limit_failures"] = b.limit_failures;
     if (b.hls_mismatch_clock != 0) {
       j["hls_mismatch"] = {{"signal", b.hls_mismatch_what},
                            {"hls", b.hls_mismatch_hls},

@@ -139,6 +139,10 @@ struct BusCompare {
   uint64_t hls_mismatch_clock = 0;
   std::string hls_mismatch_what;
   uint64_t hls_mismatch_hls = 0, hls_mismatch_rtl = 0;
+  // With the feed profile (a PROFILE=1 top): the bus run's step stream
+  // against the machine's limits, as the lockstep run's.
+  bool profiled = false;
+  std::vector<std::string> limit_failures;
   bool passed = false;
 };
 

@@ -1,10 +1,11 @@
 #!/usr/bin/python3
 """Builds motion_soc behind both buses (tests/cocotb/tb_motion_soc.sv) with
 Verilator and runs the cocotb tests (tests/cocotb/test_motion_soc.py) through
-each bus.
+each bus; then the same with the feed profile built in (PROFILE=1) and its
+tests (tests/cocotb/test_motion_soc_profile.py).
 
 usage: tests/cocotb/run.py [--bus axil,wb] [--build-dir DIR] [--testcase NAME[,NAME]] [--seed N]
-                           [--hwinterp PATH]
+                           [--hwinterp PATH] [--module test_motion_soc|test_motion_soc_profile]
 
 --hwinterp: the hwinterp executable the gcode_program test compiles its
 program with (default build/tb/hwinterp).
@@ -27,6 +28,8 @@ def main(argv):
     ap.add_argument("--build-dir", default=os.path.join(ROOT, "build", "cocotb"))
     ap.add_argument("--testcase", default=None)
     ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--module", default=None,
+                    help="test_motion_soc or test_motion_soc_profile only (default: both)")
     ap.add_argument("--hwinterp", default=os.path.join(ROOT, "build", "tb", "hwinterp"))
     a = ap.parse_args(argv)
     a.build_dir = os.path.abspath(a.build_dir)  # the tests run in tests/cocotb/
@@ -46,23 +49,35 @@ def main(argv):
     os.environ.setdefault("MAKEFLAGS", f"-j{os.environ.get('HWINTERP_JOBS', '2')}")
     if sys.prefix != sys.base_prefix:  # the simulator's embedded Python: the venv's
         os.environ["VIRTUAL_ENV"] = sys.prefix
-    runner = get_runner("verilator")
-    runner.build(verilog_sources=files, hdl_toplevel=top, build_dir=a.build_dir,
-                 build_args=[os.path.join(rtl, "regs", "lint.vlt"), "-Wno-fatal",
-                             "--x-assign", "unique", "--x-initial", "unique",
-                             "-CFLAGS", "-O1"],
-                 log_file=os.path.join(a.build_dir, "build.log"))
     bad = 0
-    for bus in buses:
-        results = runner.test(test_module="test_motion_soc", hdl_toplevel=top,
-                              test_dir=HERE, build_dir=a.build_dir, testcase=a.testcase,
-                              seed=a.seed, extra_env={"SOC_BUS": bus,
-                                                    "HWINTERP_EXE": os.path.abspath(a.hwinterp)},
-                              results_xml=os.path.join(a.build_dir, f"results_{bus}.xml"),
-                              log_file=os.path.join(a.build_dir, f"test_{bus}.log"))
-        n, failed = get_results(results)
-        print(f"cocotb {bus}: {n - failed}/{n} tests pass (log: {a.build_dir}/test_{bus}.log)")
-        bad |= failed > 0 or n == 0
+    # Two builds: motion_soc as it is by default (test_motion_soc), and with
+    # the feed profile (PROFILE=1, ticks of 256 clocks so that a move takes
+    # some 10^4 clocks: test_motion_soc_profile) in <build-dir>/profile.
+    builds = [("test_motion_soc", a.build_dir, {}),
+              ("test_motion_soc_profile", os.path.join(a.build_dir, "profile"),
+               {"PROFILE": 1, "TICK_W": 8})]
+    for module, build_dir, params in builds:
+        if a.module and module != a.module:
+            continue
+        os.makedirs(build_dir, exist_ok=True)
+        runner = get_runner("verilator")
+        runner.build(verilog_sources=files, hdl_toplevel=top, build_dir=build_dir,
+                     parameters=params,
+                     build_args=[os.path.join(rtl, "regs", "lint.vlt"), "-Wno-fatal",
+                                 "--x-assign", "unique", "--x-initial", "unique",
+                                 "-CFLAGS", "-O1"],
+                     log_file=os.path.join(build_dir, "build.log"))
+        for bus in buses:
+            results = runner.test(test_module=module, hdl_toplevel=top,
+                                  test_dir=HERE, build_dir=build_dir, testcase=a.testcase,
+                                  seed=a.seed, extra_env={"SOC_BUS": bus,
+                                                        "HWINTERP_EXE": os.path.abspath(a.hwinterp)},
+                                  results_xml=os.path.join(build_dir, f"results_{bus}.xml"),
+                                  log_file=os.path.join(build_dir, f"test_{bus}.log"))
+            n, failed = get_results(results)
+            print(f"cocotb {module} {bus}: {n - failed}/{n} tests pass "
+                  f"(log: {build_dir}/test_{bus}.log)")
+            bad |= failed > 0 or n == 0
     return 1 if bad else 0
 
 

@@ -4,7 +4,9 @@
 // instance). The AXI4-Lite ports carry the names cocotbext-axi's
 // AxiLiteBus.from_prefix(dut, "s_axil") looks for.
 module tb_motion_soc #(
-  parameter int FIFO_DEPTH = 8
+  parameter int FIFO_DEPTH = 8,
+  parameter int PROFILE    = 0,  // 1: both instances with the feed profile (rtl/motion_soc.sv)
+  parameter int TICK_W     = 10  // the profile's tick, 2^TICK_W clocks
 ) (
   input  logic        clk_i,
   input  logic        rst_ni,
@@ -49,7 +51,9 @@ module tb_motion_soc #(
   output logic        wb_irq_o
 );
   motion_soc_axil #(
-    .FIFO_DEPTH(FIFO_DEPTH)
+    .FIFO_DEPTH(FIFO_DEPTH),
+    .PROFILE   (PROFILE),
+    .TICK_W    (TICK_W)
   ) u_axil (
     .clk_i, .rst_ni,
     .s_axil_awvalid_i(s_axil_awvalid), .s_axil_awready_o(s_axil_awready),
@@ -67,7 +71,9 @@ module tb_motion_soc #(
   );
 
   motion_soc_wb #(
-    .FIFO_DEPTH(FIFO_DEPTH)
+    .FIFO_DEPTH(FIFO_DEPTH),
+    .PROFILE   (PROFILE),
+    .TICK_W    (TICK_W)
   ) u_wb (
     .clk_i, .rst_ni, .wb_cyc_i, .wb_stb_i, .wb_we_i, .wb_adr_i, .wb_dat_i, .wb_sel_i,
     .wb_dat_o, .wb_ack_o, .wb_err_o, .wb_stall_o,

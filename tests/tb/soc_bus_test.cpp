@@ -245,8 +245,8 @@ void random_traffic(uint64_t seed, int axes, int commands, uint32_t max_wait) {
             if (room == 0) rd(regs::kFifoLevel, 0, 3);
             wr(regs::kCmdPush, 1, 0, 1);
           } else if (k < 40) {  // an unmapped word
-            static const uint32_t kHoles[] = {0x18, 0x1c, 0x38,  0x3c,  0x58,  0x7c,
-                                              0xe8, 0xfc, 0x140, 0x1fc, 0x240, 0x3fc};
+            static const uint32_t kHoles[] = {0x1c, 0x38,  0x3c,  0x58,  0x7c,  0xe8,
+                                              0xec, 0x150, 0x1fc, 0x250, 0x3f8, 0x3fc};
             const uint32_t a = kHoles[uni(0, 11)];
             uni(0, 1) ? wr(a, static_cast<uint32_t>(uni(0, 0xFFFFFFFF)), 1) : rd(a, 1);
             ++illegal;

@@ -232,6 +232,7 @@ module motion_soc_regs_axil (
         logic id_widths;
         logic id_widths2;
         logic id_clock;
+        logic id_profile;
         logic ctrl;
         logic status;
         logic events;
@@ -264,6 +265,9 @@ module motion_soc_regs_axil (
         logic snap_speed3;
         logic snap_speed4;
         logic snap_speed5;
+        logic [1:0] prof_q;
+        logic prof_len;
+        logic prof_ctrl;
         logic probe_cfg;
         logic latch_ctrl;
         logic [1:0] latch_time;
@@ -273,6 +277,8 @@ module motion_soc_regs_axil (
         logic [1:0] latch_pos3;
         logic [1:0] latch_pos4;
         logic [1:0] latch_pos5;
+        logic prof_level;
+        logic [1:0] prof_speed;
         logic cmd_delta0;
         logic cmd_delta1;
         logic cmd_delta2;
@@ -288,6 +294,10 @@ module motion_soc_regs_axil (
         logic [1:0] cmd_at;
         logic cmd_flags;
         logic cmd_push;
+        logic cmd_mv_ops;
+        logic cmd_mv_target;
+        logic cmd_mv_end;
+        logic cmd_mv_max;
     } decoded_reg_strb_t;
     decoded_reg_strb_t decoded_reg_strb;
     logic decoded_err;
@@ -320,6 +330,9 @@ module motion_soc_regs_axil (
         decoded_reg_strb.id_clock = cpuif_req_masked & (cpuif_addr == 10'h14) & !cpuif_req_is_wr;
         is_valid_addr |= cpuif_req_masked & (cpuif_addr == 10'h14);
         is_valid_rw |= cpuif_req_masked & (cpuif_addr == 10'h14) & !cpuif_req_is_wr;
+        decoded_reg_strb.id_profile = cpuif_req_masked & (cpuif_addr == 10'h18) & !cpuif_req_is_wr;
+        is_valid_addr |= cpuif_req_masked & (cpuif_addr == 10'h18);
+        is_valid_rw |= cpuif_req_masked & (cpuif_addr == 10'h18) & !cpuif_req_is_wr;
         decoded_reg_strb.ctrl = cpuif_req_masked & (cpuif_addr == 10'h20) & cpuif_req_is_wr;
         is_valid_addr |= cpuif_req_masked & (cpuif_addr == 10'h20);
         is_valid_rw |= cpuif_req_masked & (cpuif_addr == 10'h20) & cpuif_req_is_wr;
@@ -440,6 +453,18 @@ module motion_soc_regs_axil (
         decoded_reg_strb.snap_speed5 = cpuif_req_masked & (cpuif_addr == 10'he4) & !cpuif_req_is_wr;
         is_valid_addr |= cpuif_req_masked & (cpuif_addr == 10'he4);
         is_valid_rw |= cpuif_req_masked & (cpuif_addr == 10'he4) & !cpuif_req_is_wr;
+        decoded_reg_strb.prof_q[0] = cpuif_req_masked & (cpuif_addr == 10'hf0);
+        is_valid_addr |= cpuif_req_masked & (cpuif_addr == 10'hf0);
+        is_valid_rw |= cpuif_req_masked & (cpuif_addr == 10'hf0);
+        decoded_reg_strb.prof_q[1] = cpuif_req_masked & (cpuif_addr == 10'hf4);
+        is_valid_addr |= cpuif_req_masked & (cpuif_addr == 10'hf4);
+        is_valid_rw |= cpuif_req_masked & (cpuif_addr == 10'hf4);
+        decoded_reg_strb.prof_len = cpuif_req_masked & (cpuif_addr == 10'hf8);
+        is_valid_addr |= cpuif_req_masked & (cpuif_addr == 10'hf8);
+        is_valid_rw |= cpuif_req_masked & (cpuif_addr == 10'hf8);
+        decoded_reg_strb.prof_ctrl = cpuif_req_masked & (cpuif_addr == 10'hfc);
+        is_valid_addr |= cpuif_req_masked & (cpuif_addr == 10'hfc);
+        is_valid_rw |= cpuif_req_masked & (cpuif_addr == 10'hfc);
         decoded_reg_strb.probe_cfg = cpuif_req_masked & (cpuif_addr == 10'h100);
         is_valid_addr |= cpuif_req_masked & (cpuif_addr == 10'h100);
         is_valid_rw |= cpuif_req_masked & (cpuif_addr == 10'h100);
@@ -488,6 +513,15 @@ module motion_soc_regs_axil (
         decoded_reg_strb.latch_pos5[1] = cpuif_req_masked & (cpuif_addr == 10'h13c) & !cpuif_req_is_wr;
         is_valid_addr |= cpuif_req_masked & (cpuif_addr == 10'h13c);
         is_valid_rw |= cpuif_req_masked & (cpuif_addr == 10'h13c) & !cpuif_req_is_wr;
+        decoded_reg_strb.prof_level = cpuif_req_masked & (cpuif_addr == 10'h140) & !cpuif_req_is_wr;
+        is_valid_addr |= cpuif_req_masked & (cpuif_addr == 10'h140);
+        is_valid_rw |= cpuif_req_masked & (cpuif_addr == 10'h140) & !cpuif_req_is_wr;
+        decoded_reg_strb.prof_speed[0] = cpuif_req_masked & (cpuif_addr == 10'h148) & !cpuif_req_is_wr;
+        is_valid_addr |= cpuif_req_masked & (cpuif_addr == 10'h148);
+        is_valid_rw |= cpuif_req_masked & (cpuif_addr == 10'h148) & !cpuif_req_is_wr;
+        decoded_reg_strb.prof_speed[1] = cpuif_req_masked & (cpuif_addr == 10'h14c) & !cpuif_req_is_wr;
+        is_valid_addr |= cpuif_req_masked & (cpuif_addr == 10'h14c);
+        is_valid_rw |= cpuif_req_masked & (cpuif_addr == 10'h14c) & !cpuif_req_is_wr;
         decoded_reg_strb.cmd_delta0 = cpuif_req_masked & (cpuif_addr == 10'h200) & cpuif_req_is_wr;
         is_valid_addr |= cpuif_req_masked & (cpuif_addr == 10'h200);
         is_valid_rw |= cpuif_req_masked & (cpuif_addr == 10'h200) & cpuif_req_is_wr;
@@ -536,6 +570,18 @@ module motion_soc_regs_axil (
         decoded_reg_strb.cmd_push = cpuif_req_masked & (cpuif_addr == 10'h23c) & cpuif_req_is_wr;
         is_valid_addr |= cpuif_req_masked & (cpuif_addr == 10'h23c);
         is_valid_rw |= cpuif_req_masked & (cpuif_addr == 10'h23c) & cpuif_req_is_wr;
+        decoded_reg_strb.cmd_mv_ops = cpuif_req_masked & (cpuif_addr == 10'h240) & cpuif_req_is_wr;
+        is_valid_addr |= cpuif_req_masked & (cpuif_addr == 10'h240);
+        is_valid_rw |= cpuif_req_masked & (cpuif_addr == 10'h240) & cpuif_req_is_wr;
+        decoded_reg_strb.cmd_mv_target = cpuif_req_masked & (cpuif_addr == 10'h244) & cpuif_req_is_wr;
+        is_valid_addr |= cpuif_req_masked & (cpuif_addr == 10'h244);
+        is_valid_rw |= cpuif_req_masked & (cpuif_addr == 10'h244) & cpuif_req_is_wr;
+        decoded_reg_strb.cmd_mv_end = cpuif_req_masked & (cpuif_addr == 10'h248) & cpuif_req_is_wr;
+        is_valid_addr |= cpuif_req_masked & (cpuif_addr == 10'h248);
+        is_valid_rw |= cpuif_req_masked & (cpuif_addr == 10'h248) & cpuif_req_is_wr;
+        decoded_reg_strb.cmd_mv_max = cpuif_req_masked & (cpuif_addr == 10'h24c) & cpuif_req_is_wr;
+        is_valid_addr |= cpuif_req_masked & (cpuif_addr == 10'h24c);
+        is_valid_rw |= cpuif_req_masked & (cpuif_addr == 10'h24c) & cpuif_req_is_wr;
         decoded_err = (~is_valid_addr | (is_valid_addr & ~is_valid_rw)) & decoded_req;
     end
 
@@ -724,6 +770,32 @@ module motion_soc_regs_axil (
         } snap_ctrl;
         struct packed {
             struct packed {
+                logic [31:0] next;
+                logic load_next;
+            } lo;
+            struct packed {
+                logic [31:0] next;
+                logic load_next;
+            } hi;
+        } prof_q;
+        struct packed {
+            struct packed {
+                logic [31:0] next;
+                logic load_next;
+            } value;
+        } prof_len;
+        struct packed {
+            struct packed {
+                logic next;
+                logic load_next;
+            } hold;
+            struct packed {
+                logic [8:0] next;
+                logic load_next;
+            } ovr;
+        } prof_ctrl;
+        struct packed {
+            struct packed {
                 logic [15:0] next;
                 logic load_next;
             } filter;
@@ -848,6 +920,30 @@ module motion_soc_regs_axil (
                 logic load_next;
             } push;
         } cmd_push;
+        struct packed {
+            struct packed {
+                logic [31:0] next;
+                logic load_next;
+            } value;
+        } cmd_mv_ops;
+        struct packed {
+            struct packed {
+                logic [31:0] next;
+                logic load_next;
+            } value;
+        } cmd_mv_target;
+        struct packed {
+            struct packed {
+                logic [31:0] next;
+                logic load_next;
+            } value;
+        } cmd_mv_end;
+        struct packed {
+            struct packed {
+                logic [31:0] next;
+                logic load_next;
+            } value;
+        } cmd_mv_max;
     } field_combo_t;
     field_combo_t field_combo;
 
@@ -990,6 +1086,27 @@ module motion_soc_regs_axil (
         } snap_ctrl;
         struct packed {
             struct packed {
+                logic [31:0] value;
+            } lo;
+            struct packed {
+                logic [31:0] value;
+            } hi;
+        } prof_q;
+        struct packed {
+            struct packed {
+                logic [31:0] value;
+            } value;
+        } prof_len;
+        struct packed {
+            struct packed {
+                logic value;
+            } hold;
+            struct packed {
+                logic [8:0] value;
+            } ovr;
+        } prof_ctrl;
+        struct packed {
+            struct packed {
                 logic [15:0] value;
             } filter;
             struct packed {
@@ -1091,6 +1208,26 @@ module motion_soc_regs_axil (
                 logic value;
             } push;
         } cmd_push;
+        struct packed {
+            struct packed {
+                logic [31:0] value;
+            } value;
+        } cmd_mv_ops;
+        struct packed {
+            struct packed {
+                logic [31:0] value;
+            } value;
+        } cmd_mv_target;
+        struct packed {
+            struct packed {
+                logic [31:0] value;
+            } value;
+        } cmd_mv_end;
+        struct packed {
+            struct packed {
+                logic [31:0] value;
+            } value;
+        } cmd_mv_max;
     } field_storage_t;
     field_storage_t field_storage;
 
@@ -1967,6 +2104,121 @@ module motion_soc_regs_axil (
         end
     end
     assign hwif_out.snap_ctrl.arm.value = field_storage.snap_ctrl.arm.value;
+    // Field: motion_soc_regs.prof_q.lo
+    always_comb begin
+        automatic logic [31:0] next_c;
+        automatic logic load_next_c;
+        next_c = field_storage.prof_q.lo.value;
+        load_next_c = '0;
+        if(decoded_reg_strb.prof_q[0] && decoded_req_is_wr) begin // SW write
+            next_c = (field_storage.prof_q.lo.value & ~decoded_wr_biten[31:0]) | (decoded_wr_data[31:0] & decoded_wr_biten[31:0]);
+            load_next_c = '1;
+        end
+        field_combo.prof_q.lo.next = next_c;
+        field_combo.prof_q.lo.load_next = load_next_c;
+    end
+    always_ff @(posedge clk or negedge arst_n) begin
+        if(~arst_n) begin
+            field_storage.prof_q.lo.value <= 32'h0;
+        end else begin
+            if(field_combo.prof_q.lo.load_next) begin
+                field_storage.prof_q.lo.value <= field_combo.prof_q.lo.next;
+            end
+        end
+    end
+    assign hwif_out.prof_q.lo.value = field_storage.prof_q.lo.value;
+    // Field: motion_soc_regs.prof_q.hi
+    always_comb begin
+        automatic logic [31:0] next_c;
+        automatic logic load_next_c;
+        next_c = field_storage.prof_q.hi.value;
+        load_next_c = '0;
+        if(decoded_reg_strb.prof_q[1] && decoded_req_is_wr) begin // SW write
+            next_c = (field_storage.prof_q.hi.value & ~decoded_wr_biten[31:0]) | (decoded_wr_data[31:0] & decoded_wr_biten[31:0]);
+            load_next_c = '1;
+        end
+        field_combo.prof_q.hi.next = next_c;
+        field_combo.prof_q.hi.load_next = load_next_c;
+    end
+    always_ff @(posedge clk or negedge arst_n) begin
+        if(~arst_n) begin
+            field_storage.prof_q.hi.value <= 32'h0;
+        end else begin
+            if(field_combo.prof_q.hi.load_next) begin
+                field_storage.prof_q.hi.value <= field_combo.prof_q.hi.next;
+            end
+        end
+    end
+    assign hwif_out.prof_q.hi.value = field_storage.prof_q.hi.value;
+    // Field: motion_soc_regs.prof_len.value
+    always_comb begin
+        automatic logic [31:0] next_c;
+        automatic logic load_next_c;
+        next_c = field_storage.prof_len.value.value;
+        load_next_c = '0;
+        if(decoded_reg_strb.prof_len && decoded_req_is_wr) begin // SW write
+            next_c = (field_storage.prof_len.value.value & ~decoded_wr_biten[31:0]) | (decoded_wr_data[31:0] & decoded_wr_biten[31:0]);
+            load_next_c = '1;
+        end
+        field_combo.prof_len.value.next = next_c;
+        field_combo.prof_len.value.load_next = load_next_c;
+    end
+    always_ff @(posedge clk or negedge arst_n) begin
+        if(~arst_n) begin
+            field_storage.prof_len.value.value <= 32'h1;
+        end else begin
+            if(field_combo.prof_len.value.load_next) begin
+                field_storage.prof_len.value.value <= field_combo.prof_len.value.next;
+            end
+        end
+    end
+    assign hwif_out.prof_len.value.value = field_storage.prof_len.value.value;
+    // Field: motion_soc_regs.prof_ctrl.hold
+    always_comb begin
+        automatic logic [0:0] next_c;
+        automatic logic load_next_c;
+        next_c = field_storage.prof_ctrl.hold.value;
+        load_next_c = '0;
+        if(decoded_reg_strb.prof_ctrl && decoded_req_is_wr) begin // SW write
+            next_c = (field_storage.prof_ctrl.hold.value & ~decoded_wr_biten[0:0]) | (decoded_wr_data[0:0] & decoded_wr_biten[0:0]);
+            load_next_c = '1;
+        end
+        field_combo.prof_ctrl.hold.next = next_c;
+        field_combo.prof_ctrl.hold.load_next = load_next_c;
+    end
+    always_ff @(posedge clk or negedge arst_n) begin
+        if(~arst_n) begin
+            field_storage.prof_ctrl.hold.value <= 1'h0;
+        end else begin
+            if(field_combo.prof_ctrl.hold.load_next) begin
+                field_storage.prof_ctrl.hold.value <= field_combo.prof_ctrl.hold.next;
+            end
+        end
+    end
+    assign hwif_out.prof_ctrl.hold.value = field_storage.prof_ctrl.hold.value;
+    // Field: motion_soc_regs.prof_ctrl.ovr
+    always_comb begin
+        automatic logic [8:0] next_c;
+        automatic logic load_next_c;
+        next_c = field_storage.prof_ctrl.ovr.value;
+        load_next_c = '0;
+        if(decoded_reg_strb.prof_ctrl && decoded_req_is_wr) begin // SW write
+            next_c = (field_storage.prof_ctrl.ovr.value & ~decoded_wr_biten[24:16]) | (decoded_wr_data[24:16] & decoded_wr_biten[24:16]);
+            load_next_c = '1;
+        end
+        field_combo.prof_ctrl.ovr.next = next_c;
+        field_combo.prof_ctrl.ovr.load_next = load_next_c;
+    end
+    always_ff @(posedge clk or negedge arst_n) begin
+        if(~arst_n) begin
+            field_storage.prof_ctrl.ovr.value <= 9'h80;
+        end else begin
+            if(field_combo.prof_ctrl.ovr.load_next) begin
+                field_storage.prof_ctrl.ovr.value <= field_combo.prof_ctrl.ovr.next;
+            end
+        end
+    end
+    assign hwif_out.prof_ctrl.ovr.value = field_storage.prof_ctrl.ovr.value;
     // Field: motion_soc_regs.probe_cfg.filter
     always_comb begin
         automatic logic [15:0] next_c;
@@ -2499,6 +2751,98 @@ module motion_soc_regs_axil (
         end
     end
     assign hwif_out.cmd_push.push.swmod = decoded_reg_strb.cmd_push && decoded_req_is_wr && |(decoded_wr_biten[0:0]);
+    // Field: motion_soc_regs.cmd_mv_ops.value
+    always_comb begin
+        automatic logic [31:0] next_c;
+        automatic logic load_next_c;
+        next_c = field_storage.cmd_mv_ops.value.value;
+        load_next_c = '0;
+        if(decoded_reg_strb.cmd_mv_ops && decoded_req_is_wr) begin // SW write
+            next_c = (field_storage.cmd_mv_ops.value.value & ~decoded_wr_biten[31:0]) | (decoded_wr_data[31:0] & decoded_wr_biten[31:0]);
+            load_next_c = '1;
+        end
+        field_combo.cmd_mv_ops.value.next = next_c;
+        field_combo.cmd_mv_ops.value.load_next = load_next_c;
+    end
+    always_ff @(posedge clk or negedge arst_n) begin
+        if(~arst_n) begin
+            field_storage.cmd_mv_ops.value.value <= 32'h0;
+        end else begin
+            if(field_combo.cmd_mv_ops.value.load_next) begin
+                field_storage.cmd_mv_ops.value.value <= field_combo.cmd_mv_ops.value.next;
+            end
+        end
+    end
+    assign hwif_out.cmd_mv_ops.value.value = field_storage.cmd_mv_ops.value.value;
+    // Field: motion_soc_regs.cmd_mv_target.value
+    always_comb begin
+        automatic logic [31:0] next_c;
+        automatic logic load_next_c;
+        next_c = field_storage.cmd_mv_target.value.value;
+        load_next_c = '0;
+        if(decoded_reg_strb.cmd_mv_target && decoded_req_is_wr) begin // SW write
+            next_c = (field_storage.cmd_mv_target.value.value & ~decoded_wr_biten[31:0]) | (decoded_wr_data[31:0] & decoded_wr_biten[31:0]);
+            load_next_c = '1;
+        end
+        field_combo.cmd_mv_target.value.next = next_c;
+        field_combo.cmd_mv_target.value.load_next = load_next_c;
+    end
+    always_ff @(posedge clk or negedge arst_n) begin
+        if(~arst_n) begin
+            field_storage.cmd_mv_target.value.value <= 32'h0;
+        end else begin
+            if(field_combo.cmd_mv_target.value.load_next) begin
+                field_storage.cmd_mv_target.value.value <= field_combo.cmd_mv_target.value.next;
+            end
+        end
+    end
+    assign hwif_out.cmd_mv_target.value.value = field_storage.cmd_mv_target.value.value;
+    // Field: motion_soc_regs.cmd_mv_end.value
+    always_comb begin
+        automatic logic [31:0] next_c;
+        automatic logic load_next_c;
+        next_c = field_storage.cmd_mv_end.value.value;
+        load_next_c = '0;
+        if(decoded_reg_strb.cmd_mv_end && decoded_req_is_wr) begin // SW write
+            next_c = (field_storage.cmd_mv_end.value.value & ~decoded_wr_biten[31:0]) | (decoded_wr_data[31:0] & decoded_wr_biten[31:0]);
+            load_next_c = '1;
+        end
+        field_combo.cmd_mv_end.value.next = next_c;
+        field_combo.cmd_mv_end.value.load_next = load_next_c;
+    end
+    always_ff @(posedge clk or negedge arst_n) begin
+        if(~arst_n) begin
+            field_storage.cmd_mv_end.value.value <= 32'h0;
+        end else begin
+            if(field_combo.cmd_mv_end.value.load_next) begin
+                field_storage.cmd_mv_end.value.value <= field_combo.cmd_mv_end.value.next;
+            end
+        end
+    end
+    assign hwif_out.cmd_mv_end.value.value = field_storage.cmd_mv_end.value.value;
+    // Field: motion_soc_regs.cmd_mv_max.value
+    always_comb begin
+        automatic logic [31:0] next_c;
+        automatic logic load_next_c;
+        next_c = field_storage.cmd_mv_max.value.value;
+        load_next_c = '0;
+        if(decoded_reg_strb.cmd_mv_max && decoded_req_is_wr) begin // SW write
+            next_c = (field_storage.cmd_mv_max.value.value & ~decoded_wr_biten[31:0]) | (decoded_wr_data[31:0] & decoded_wr_biten[31:0]);
+            load_next_c = '1;
+        end
+        field_combo.cmd_mv_max.value.next = next_c;
+        field_combo.cmd_mv_max.value.load_next = load_next_c;
+    end
+    always_ff @(posedge clk or negedge arst_n) begin
+        if(~arst_n) begin
+            field_storage.cmd_mv_max.value.value <= 32'h0;
+        end else begin
+            if(field_combo.cmd_mv_max.value.load_next) begin
+                field_storage.cmd_mv_max.value.value <= field_combo.cmd_mv_max.value.next;
+            end
+        end
+    end
+    assign hwif_out.cmd_mv_max.value.value = field_storage.cmd_mv_max.value.value;
 
     //--------------------------------------------------------------------------
     // Write response
@@ -2524,13 +2868,14 @@ module motion_soc_regs_axil (
             readback_data_var[31:0] = 32'h484d5331;
         end
         if(rd_mux_addr == 10'h4) begin
-            readback_data_var[15:0] = 16'h0;
+            readback_data_var[15:0] = 16'h1;
             readback_data_var[31:16] = 16'h1;
         end
         if(rd_mux_addr == 10'h8) begin
             readback_data_var[3:0] = hwif_in.id_build.axes.next;
             readback_data_var[7:4] = hwif_in.id_build.core.next;
             readback_data_var[9:8] = hwif_in.id_build.bus.next;
+            readback_data_var[10] = hwif_in.id_build.profile.next;
             readback_data_var[14:12] = hwif_in.id_build.step_types.next;
             readback_data_var[31:16] = hwif_in.id_build.fifo_depth.next;
         end
@@ -2547,6 +2892,12 @@ module motion_soc_regs_axil (
         if(rd_mux_addr == 10'h14) begin
             readback_data_var[31:0] = hwif_in.id_clock.hz.next;
         end
+        if(rd_mux_addr == 10'h18) begin
+            readback_data_var[7:0] = hwif_in.id_profile.spd_w.next;
+            readback_data_var[15:8] = hwif_in.id_profile.tick_w.next;
+            readback_data_var[23:16] = hwif_in.id_profile.len_w.next;
+            readback_data_var[31:24] = hwif_in.id_profile.lvl_w.next;
+        end
         if(rd_mux_addr == 10'h24) begin
             readback_data_var[0] = hwif_in.status.busy.next;
             readback_data_var[1] = hwif_in.status.fifo_empty.next;
@@ -2558,6 +2909,8 @@ module motion_soc_regs_axil (
             readback_data_var[7] = hwif_in.status.snap_armed.next;
             readback_data_var[8] = hwif_in.status.latch_armed.next;
             readback_data_var[9] = hwif_in.status.waiting.next;
+            readback_data_var[10] = hwif_in.status.prof_busy.next;
+            readback_data_var[11] = hwif_in.status.wdog_stopping.next;
         end
         if(rd_mux_addr == 10'h28) begin
             readback_data_var[0] = field_storage.events.overflow.value;
@@ -2695,6 +3048,19 @@ module motion_soc_regs_axil (
             readback_data_var[30:0] = hwif_in.snap_speed5.period.next;
             readback_data_var[31] = hwif_in.snap_speed5.neg.next;
         end
+        if(rd_mux_addr == 10'hf0) begin
+            readback_data_var[31:0] = field_storage.prof_q.lo.value;
+        end
+        if(rd_mux_addr == 10'hf4) begin
+            readback_data_var[31:0] = field_storage.prof_q.hi.value;
+        end
+        if(rd_mux_addr == 10'hf8) begin
+            readback_data_var[31:0] = field_storage.prof_len.value.value;
+        end
+        if(rd_mux_addr == 10'hfc) begin
+            readback_data_var[0] = field_storage.prof_ctrl.hold.value;
+            readback_data_var[24:16] = field_storage.prof_ctrl.ovr.value;
+        end
         if(rd_mux_addr == 10'h100) begin
             readback_data_var[15:0] = field_storage.probe_cfg.filter.value;
             readback_data_var[16] = field_storage.probe_cfg.falling.value;
@@ -2741,6 +3107,15 @@ module motion_soc_regs_axil (
         end
         if(rd_mux_addr == 10'h13c) begin
             readback_data_var[31:0] = hwif_in.latch_pos5.pos.next[63:32];
+        end
+        if(rd_mux_addr == 10'h140) begin
+            readback_data_var[31:0] = hwif_in.prof_level.c.next;
+        end
+        if(rd_mux_addr == 10'h148) begin
+            readback_data_var[31:0] = hwif_in.prof_speed.speed.next[31:0];
+        end
+        if(rd_mux_addr == 10'h14c) begin
+            readback_data_var[31:0] = hwif_in.prof_speed.speed.next[63:32];
         end
         readback_data = readback_data_var;
         readback_done = decoded_req & ~decoded_req_is_wr;

@@ -6,10 +6,10 @@ package motion_soc_regs_pkg;
 
     localparam MOTION_SOC_REGS_AXIL_DATA_WIDTH = 32;
     localparam MOTION_SOC_REGS_AXIL_MIN_ADDR_WIDTH = 10;
-    localparam MOTION_SOC_REGS_AXIL_SIZE = 'h240;
+    localparam MOTION_SOC_REGS_AXIL_SIZE = 'h250;
     localparam MOTION_SOC_REGS_WB_DATA_WIDTH = 32;
     localparam MOTION_SOC_REGS_WB_MIN_ADDR_WIDTH = 10;
-    localparam MOTION_SOC_REGS_WB_SIZE = 'h240;
+    localparam MOTION_SOC_REGS_WB_SIZE = 'h250;
 
     typedef struct packed {
         logic [3:0] next;
@@ -24,6 +24,10 @@ package motion_soc_regs_pkg;
     } motion_soc_regs__id_build__bus__in_t;
 
     typedef struct packed {
+        logic next;
+    } motion_soc_regs__id_build__profile__in_t;
+
+    typedef struct packed {
         logic [2:0] next;
     } motion_soc_regs__id_build__step_types__in_t;
 
@@ -35,6 +39,7 @@ package motion_soc_regs_pkg;
         motion_soc_regs__id_build__axes__in_t axes;
         motion_soc_regs__id_build__core__in_t core;
         motion_soc_regs__id_build__bus__in_t bus;
+        motion_soc_regs__id_build__profile__in_t profile;
         motion_soc_regs__id_build__step_types__in_t step_types;
         motion_soc_regs__id_build__fifo_depth__in_t fifo_depth;
     } motion_soc_regs__id_build__in_t;
@@ -84,6 +89,29 @@ package motion_soc_regs_pkg;
     } motion_soc_regs__id_clock__in_t;
 
     typedef struct packed {
+        logic [7:0] next;
+    } motion_soc_regs__id_profile__spd_w__in_t;
+
+    typedef struct packed {
+        logic [7:0] next;
+    } motion_soc_regs__id_profile__tick_w__in_t;
+
+    typedef struct packed {
+        logic [7:0] next;
+    } motion_soc_regs__id_profile__len_w__in_t;
+
+    typedef struct packed {
+        logic [7:0] next;
+    } motion_soc_regs__id_profile__lvl_w__in_t;
+
+    typedef struct packed {
+        motion_soc_regs__id_profile__spd_w__in_t spd_w;
+        motion_soc_regs__id_profile__tick_w__in_t tick_w;
+        motion_soc_regs__id_profile__len_w__in_t len_w;
+        motion_soc_regs__id_profile__lvl_w__in_t lvl_w;
+    } motion_soc_regs__id_profile__in_t;
+
+    typedef struct packed {
         logic next;
     } motion_soc_regs__status__busy__in_t;
 
@@ -124,6 +152,14 @@ package motion_soc_regs_pkg;
     } motion_soc_regs__status__waiting__in_t;
 
     typedef struct packed {
+        logic next;
+    } motion_soc_regs__status__prof_busy__in_t;
+
+    typedef struct packed {
+        logic next;
+    } motion_soc_regs__status__wdog_stopping__in_t;
+
+    typedef struct packed {
         motion_soc_regs__status__busy__in_t busy;
         motion_soc_regs__status__fifo_empty__in_t fifo_empty;
         motion_soc_regs__status__fifo_full__in_t fifo_full;
@@ -134,6 +170,8 @@ package motion_soc_regs_pkg;
         motion_soc_regs__status__snap_armed__in_t snap_armed;
         motion_soc_regs__status__latch_armed__in_t latch_armed;
         motion_soc_regs__status__waiting__in_t waiting;
+        motion_soc_regs__status__prof_busy__in_t prof_busy;
+        motion_soc_regs__status__wdog_stopping__in_t wdog_stopping;
     } motion_soc_regs__status__in_t;
 
     typedef struct packed {
@@ -267,10 +305,27 @@ package motion_soc_regs_pkg;
     } motion_soc_regs__latch_pos_r__in_t;
 
     typedef struct packed {
+        logic [31:0] next;
+    } motion_soc_regs__prof_level__c__in_t;
+
+    typedef struct packed {
+        motion_soc_regs__prof_level__c__in_t c;
+    } motion_soc_regs__prof_level__in_t;
+
+    typedef struct packed {
+        logic [63:0] next;
+    } motion_soc_regs__prof_speed__speed__in_t;
+
+    typedef struct packed {
+        motion_soc_regs__prof_speed__speed__in_t speed;
+    } motion_soc_regs__prof_speed__in_t;
+
+    typedef struct packed {
         motion_soc_regs__id_build__in_t id_build;
         motion_soc_regs__id_widths__in_t id_widths;
         motion_soc_regs__id_widths2__in_t id_widths2;
         motion_soc_regs__id_clock__in_t id_clock;
+        motion_soc_regs__id_profile__in_t id_profile;
         motion_soc_regs__status__in_t status;
         motion_soc_regs__events__in_t events;
         motion_soc_regs__fifo_level__in_t fifo_level;
@@ -297,6 +352,8 @@ package motion_soc_regs_pkg;
         motion_soc_regs__latch_pos_r__in_t latch_pos3;
         motion_soc_regs__latch_pos_r__in_t latch_pos4;
         motion_soc_regs__latch_pos_r__in_t latch_pos5;
+        motion_soc_regs__prof_level__in_t prof_level;
+        motion_soc_regs__prof_speed__in_t prof_speed;
     } motion_soc_regs__in_t;
 
     typedef struct packed {
@@ -532,6 +589,40 @@ package motion_soc_regs_pkg;
     } motion_soc_regs__snap_ctrl__out_t;
 
     typedef struct packed {
+        logic [31:0] value;
+    } motion_soc_regs__prof_q__lo__out_t;
+
+    typedef struct packed {
+        logic [31:0] value;
+    } motion_soc_regs__prof_q__hi__out_t;
+
+    typedef struct packed {
+        motion_soc_regs__prof_q__lo__out_t lo;
+        motion_soc_regs__prof_q__hi__out_t hi;
+    } motion_soc_regs__prof_q__out_t;
+
+    typedef struct packed {
+        logic [31:0] value;
+    } motion_soc_regs__prof_len__value__out_t;
+
+    typedef struct packed {
+        motion_soc_regs__prof_len__value__out_t value;
+    } motion_soc_regs__prof_len__out_t;
+
+    typedef struct packed {
+        logic value;
+    } motion_soc_regs__prof_ctrl__hold__out_t;
+
+    typedef struct packed {
+        logic [8:0] value;
+    } motion_soc_regs__prof_ctrl__ovr__out_t;
+
+    typedef struct packed {
+        motion_soc_regs__prof_ctrl__hold__out_t hold;
+        motion_soc_regs__prof_ctrl__ovr__out_t ovr;
+    } motion_soc_regs__prof_ctrl__out_t;
+
+    typedef struct packed {
         logic [15:0] value;
     } motion_soc_regs__probe_cfg__filter__out_t;
 
@@ -642,6 +733,38 @@ package motion_soc_regs_pkg;
     } motion_soc_regs__cmd_push__out_t;
 
     typedef struct packed {
+        logic [31:0] value;
+    } motion_soc_regs__cmd_mv_ops__value__out_t;
+
+    typedef struct packed {
+        motion_soc_regs__cmd_mv_ops__value__out_t value;
+    } motion_soc_regs__cmd_mv_ops__out_t;
+
+    typedef struct packed {
+        logic [31:0] value;
+    } motion_soc_regs__cmd_mv_target__value__out_t;
+
+    typedef struct packed {
+        motion_soc_regs__cmd_mv_target__value__out_t value;
+    } motion_soc_regs__cmd_mv_target__out_t;
+
+    typedef struct packed {
+        logic [31:0] value;
+    } motion_soc_regs__cmd_mv_end__value__out_t;
+
+    typedef struct packed {
+        motion_soc_regs__cmd_mv_end__value__out_t value;
+    } motion_soc_regs__cmd_mv_end__out_t;
+
+    typedef struct packed {
+        logic [31:0] value;
+    } motion_soc_regs__cmd_mv_max__value__out_t;
+
+    typedef struct packed {
+        motion_soc_regs__cmd_mv_max__value__out_t value;
+    } motion_soc_regs__cmd_mv_max__out_t;
+
+    typedef struct packed {
         motion_soc_regs__ctrl__out_t ctrl;
         motion_soc_regs__events__out_t events;
         motion_soc_regs__irq_en__out_t irq_en;
@@ -657,6 +780,9 @@ package motion_soc_regs_pkg;
         motion_soc_regs__wdog_kick__out_t wdog_kick;
         motion_soc_regs__snap_at__out_t snap_at;
         motion_soc_regs__snap_ctrl__out_t snap_ctrl;
+        motion_soc_regs__prof_q__out_t prof_q;
+        motion_soc_regs__prof_len__out_t prof_len;
+        motion_soc_regs__prof_ctrl__out_t prof_ctrl;
         motion_soc_regs__probe_cfg__out_t probe_cfg;
         motion_soc_regs__latch_ctrl__out_t latch_ctrl;
         motion_soc_regs__cmd_delta_r__out_t cmd_delta0;
@@ -674,5 +800,9 @@ package motion_soc_regs_pkg;
         motion_soc_regs__cmd_at__out_t cmd_at;
         motion_soc_regs__cmd_flags__out_t cmd_flags;
         motion_soc_regs__cmd_push__out_t cmd_push;
+        motion_soc_regs__cmd_mv_ops__out_t cmd_mv_ops;
+        motion_soc_regs__cmd_mv_target__out_t cmd_mv_target;
+        motion_soc_regs__cmd_mv_end__out_t cmd_mv_end;
+        motion_soc_regs__cmd_mv_max__out_t cmd_mv_max;
     } motion_soc_regs__out_t;
 endpackage
