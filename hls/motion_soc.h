@@ -28,6 +28,7 @@
 #include "hls/feed_profile.h"
 #include "hls/gen/motion_soc_regs.h"
 #include "hls/motion_top.h"
+#include "hls/step_encode.h"
 
 namespace hwinterp::hls {
 
@@ -79,7 +80,7 @@ class MotionSoc {
     snap_time_q_ = latch_time_q_ = 0;
     for (int i = 0; i < AXES; ++i) {
       since_q_[i] = period_q_[i] = 0;
-      type_q_[i] = phase_q_[i] = 0;
+      encode_[i].reset();
       snap_pos_q_[i] = latch_pos_q_[i] = 0;
       snap_speed_q_[i] = 0;
     }
@@ -271,7 +272,8 @@ class MotionSoc {
     const uint32_t level_m = mcnt_q_ + (mhead_q_ ? 1u : 0u);
     const uint32_t level = level_m > level_c ? level_m : level_c;
     const bool full = level == static_cast<uint32_t>(FIFO_DEPTH);
-    const bool push_refused = push && (stopped || abort_);
+    const bool push_refused =
+        push && (stopped || abort_ || (PROFILE != 0 && o.cmd_flags.timed.value));
     const bool push_full = push && !push_refused && full;
     push_ok_ = push && !push_refused && !full;
     const bool head_due = !rdata_q_.timed || time_q_ >= rdata_q_.at;
@@ -443,12 +445,8 @@ class MotionSoc {
       const uint32_t since_inc = since == 0x7FFFFFFFu ? since : since + 1;
       if (r && ((seen_q_ >> i) & 1)) period_q_[i] = since_inc;
       since_q_[i] = r ? 0 : since_inc;
-      if (r) {
-        neg_q_ = (neg_q_ & ~(1u << i)) | (((dir >> i) & 1u) << i);
-        phase_q_[i] =
-            static_cast<uint8_t>(((dir >> i) & 1 ? phase_q_[i] - 1 : phase_q_[i] + 1) & 3);
-      }
-      if (!((step >> i) & 1)) type_q_[i] = type_reg_[i];
+      if (r) neg_q_ = (neg_q_ & ~(1u << i)) | (((dir >> i) & 1u) << i);
+      encode_[i].clock(type_reg_[i], (step >> i) & 1, (dir >> i) & 1);
       const uint64_t pos = core_out_.pos[i].to_uint64();
       const uint64_t pos64 = (pos >> (POS_W - 1)) & 1 ? pos | ~mask(POS_W) : pos;  // sign-extended
       if (snap_fire_) {
@@ -471,17 +469,9 @@ class MotionSoc {
     const uint32_t dir_n = static_cast<uint32_t>(core_.outputs().dir.to_uint());
     out_a_ = out_b_ = 0;
     for (int i = 0; i < AXES; ++i) {
-      const uint32_t s = (step_n >> i) & 1, d = (dir_n >> i) & 1;
-      uint32_t a = s, b = d;
-      if (type_q_[i] == 1) {
-        a = s & !d;
-        b = s & d;
-      } else if (type_q_[i] == 2) {
-        a = ((phase_q_[i] >> 1) ^ phase_q_[i]) & 1;
-        b = (phase_q_[i] >> 1) & 1;
-      }
-      out_a_ |= a << i;
-      out_b_ |= b << i;
+      const bool s = (step_n >> i) & 1, d = (dir_n >> i) & 1;
+      out_a_ |= uint32_t{encode_[i].a(s, d)} << i;
+      out_b_ |= uint32_t{encode_[i].b(s, d)} << i;
     }
     motion_soc_regs::HwifOut o;
     regs_.outputs(o);
@@ -517,7 +507,7 @@ class MotionSoc {
   bool wdog_kick_q_;
   uint32_t step_prev_q_, seen_q_, neg_q_;
   uint32_t since_q_[AXES], period_q_[AXES];
-  uint8_t type_q_[AXES], phase_q_[AXES];
+  StepEncode encode_[AXES];  // the step output types (rtl/step_encode.sv)
   uint8_t probe_s_q_;
   bool probe_f_q_;
   uint16_t probe_n_q_;

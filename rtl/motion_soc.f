@@ -18,6 +18,7 @@ regs/gen/motion_soc_regs_axil.sv
 regs/gen/motion_soc_regs_wb.sv
 prim_ram_1r1w.sv
 feed_profile.sv
+step_encode.sv
 motion_soc.sv
 motion_soc_axil.sv
 motion_soc_wb.sv

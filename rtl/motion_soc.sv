@@ -12,7 +12,8 @@
 // CMD_FLAGS as written before) at the edge that ends the write's clock. A push to a full FIFO is not
 // taken and sets EVENTS.overflow; a push while stopped (EVENTS.wdog or
 // EVENTS.estop set) or in an abort's clock is not taken and sets
-// EVENTS.refused: never a silent drop. FIFO_DEPTH commands fit, the head
+// EVENTS.refused: never a silent drop; so is a timed push (CMD_FLAGS.timed)
+// in a PROFILE = 1 build (its moves are not timed). FIFO_DEPTH commands fit, the head
 // included; FIFO_LEVEL counts them; EVENTS.low_water is set on every clock
 // the level is at most FIFO_LOW.
 //
@@ -68,11 +69,11 @@
 // shadow registers changes only at its event: read in any order, it is one
 // snapshot.
 //
-// Step outputs per axis (STEP_TYPE, taken while the axis's step is low):
-// 0 step/dir (out_a = step, out_b = dir), 1 up/down (out_a = step of a
-// positive step, out_b = of a negative), 2 quadrature (each step moves the
-// (out_a, out_b) phase one state: 00 10 11 01 forward, A leading; the
-// reverse backward).
+// Step outputs per axis (STEP_TYPE, taken while the axis's step is low),
+// motion_top's step/dir through rtl/step_encode.sv: 0 step/dir (out_a =
+// step, out_b = dir), 1 up/down (out_a = step of a positive step, out_b = of
+// a negative), 2 quadrature (each step moves the (out_a, out_b) phase one
+// state: 00 10 11 01 forward, A leading; the reverse backward).
 // The core's step stage keeps the step/dir timing (STEP_LEN ...): a
 // quadrature state lasts at least STEP_LEN + STEP_SPACE clocks.
 module motion_soc #(
@@ -311,7 +312,8 @@ module motion_soc #(
   assign level_m      = mcnt_q + LVL_W'(mhead_q);
   assign level        = (level_m > level_c) ? level_m : level_c;
   assign full         = level == LVL_W'(FIFO_DEPTH);
-  assign push_refused = push && (stopped || abort);
+  assign push_refused = push && (stopped || abort
+                                 || (PROFILE == 1 && hwif_out_i.cmd_flags.timed.value));
   assign push_full    = push && !push_refused && full;
   assign push_ok      = push && !push_refused && !full;
 
@@ -497,8 +499,6 @@ module motion_soc #(
   logic [AXES-1:0]  neg_q, neg_d;
   logic [AXES*31-1:0] since_q, since_d;    // clocks since the last step, axis i at [i*31 +: 31]
   logic [AXES*31-1:0] period_q, period_d;  // clocks between the last two steps
-  logic [AXES*2-1:0]  type_q, type_d;      // the step type in use
-  logic [AXES*2-1:0]  phase_q, phase_d;    // the quadrature state
   logic [1:0]       type_reg [6];
   logic [AXES-1:0]  rise;
   logic [31:0]      speed [AXES];
@@ -524,26 +524,19 @@ module motion_soc #(
       speed[i]    = !seen_q[i] ? 32'd0
                   : {neg_q[i], (since_q[i*31 +: 31] > period_q[i*31 +: 31]) ? since_q[i*31 +: 31]
                                                                              : period_q[i*31 +: 31]};
-      type_d[i*2 +: 2] = step[i] ? type_q[i*2 +: 2] : type_reg[i];
-      // Quadrature: the phase p counts up (forward) or down on each step;
-      // (out_a, out_b) = (p[1] ^ p[0], p[1]) is then 00 10 11 01 (A leads).
-      phase_d[i*2 +: 2] = !rise[i] ? phase_q[i*2 +: 2]
-                        : (dir[i] ? phase_q[i*2 +: 2] - 2'd1 : phase_q[i*2 +: 2] + 2'd1);
-      unique case (type_q[i*2 +: 2])
-        2'd1: begin
-          out_a_o[i] = step[i] && !dir[i];
-          out_b_o[i] = step[i] && dir[i];
-        end
-        2'd2: begin
-          out_a_o[i] = phase_q[i*2 + 1] ^ phase_q[i*2];
-          out_b_o[i] = phase_q[i*2 + 1];
-        end
-        default: begin
-          out_a_o[i] = step[i];
-          out_b_o[i] = dir[i];
-        end
-      endcase
     end
+  end
+
+  for (genvar i = 0; i < AXES; i++) begin : g_encode
+    step_encode u_encode (
+      .clk_i,
+      .rst_ni,
+      .type_i(type_reg[i]),
+      .step_i(step[i]),
+      .dir_i (dir[i]),
+      .a_o   (out_a_o[i]),
+      .b_o   (out_b_o[i])
+    );
   end
 
   // ---------------------------------------------------------------------------
@@ -721,8 +714,6 @@ module motion_soc #(
       latch_time_q  <= '0;
       since_q       <= '0;
       period_q      <= '0;
-      type_q        <= '0;
-      phase_q       <= '0;
       snap_pos_q    <= '0;
       snap_speed_q  <= '0;
       latch_pos_q   <= '0;
@@ -754,8 +745,6 @@ module motion_soc #(
       latch_time_q  <= latch_time_d;
       since_q       <= since_d;
       period_q      <= period_d;
-      type_q        <= type_d;
-      phase_q       <= phase_d;
       snap_pos_q    <= snap_pos_d;
       snap_speed_q  <= snap_speed_d;
       latch_pos_q   <= latch_pos_d;

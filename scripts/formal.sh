@@ -20,6 +20,9 @@
 #                 and the speed change only on a tick boundary (the level by
 #                 one), the feed word, the move handshake (a taken move is
 #                 never lost or overwritten)
+#   step_encode   rtl/step_encode.sv against rtl/formal/step_encode_props.sv:
+#                 each step output type is what its header says; quadrature
+#                 is the Gray state of the step count, one bit a step
 #
 # Usage: scripts/formal.sh [--blocks LIST] [--depth N] [--tim-w "W..."] [--out DIR]
 #   --blocks LIST  blocks to check (default "stepdir_axis step_stage", the
@@ -49,7 +52,7 @@ usage() { sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2; exit 2; }
 
 stage_blocks=(stepdir_axis step_stage)
 core_blocks=(dda_line ppc_line ppc_arc fixed_ratio motion_top log_stepper)
-other_blocks=(feed_profile)  # rtl/<block>.f, no core contract
+other_blocks=(feed_profile step_encode)  # rtl/<block>.f (or rtl/<block>.sv alone), no core contract
 all_blocks=("${stage_blocks[@]}" "${core_blocks[@]}" "${other_blocks[@]}")
 
 depth=""
@@ -104,7 +107,11 @@ for core in "${core_blocks[@]}"; do
   block_files[$core]="$(sed -n "/^[^#]/s|^|$root/rtl/|p" "$root/rtl/$core.f" | tr '\n' ' ')$root/rtl/formal/core_contract.sv $root/rtl/formal/core_checks.sv"
 done
 for b in "${other_blocks[@]}"; do
-  block_files[$b]="$(sed -n "/^[^#]/s|^|$root/rtl/|p" "$root/rtl/$b.f" | paste -sd ' ')"
+  if [ -f "$root/rtl/$b.f" ]; then
+    block_files[$b]="$(sed -n "/^[^#]/s|^|$root/rtl/|p" "$root/rtl/$b.f" | paste -sd ' ')"
+  else
+    block_files[$b]="$root/rtl/$b.sv"
+  fi
 done
 # Signals a proof links across the hierarchy after flattening (Yosys 0.23 has
 # neither `bind` nor hierarchical references): each `// link: A=B ...` line of

@@ -162,6 +162,28 @@ async def move_runs_to_its_end(dut):
 
 
 @cocotb.test()
+async def timed_push_is_refused(dut):
+    """A build with the profile has no timed moves: a push with
+    CMD_FLAGS.timed is not taken (FIFO_LEVEL stays 0) and sets
+    EVENTS.refused; the next untimed push is taken and runs."""
+    bus = await base.start(dut)
+    await setup_profile(bus)
+    await bus.wr("CMD_MV_OPS", OPS)
+    await bus.wr("CMD_MV_TARGET", TARGET)
+    await base.push_line(bus, [DX, 0, 0], feed=0, at=1000)
+    assert (await bus.rd("FIFO_LEVEL")) & 0xFFFF == 0, "a timed push was taken"
+    assert (await bus.rd("EVENTS")) & 1 << base.EV["refused"], "EVENTS.refused not set"
+    await bus.wr("EVENTS", 1 << base.EV["refused"])
+    await push_move(bus, dx=15, ops=16)  # 2^bits(15) operations
+    for _ in range(200):
+        if await position_x(bus) == 15:
+            break
+        await ClockCycles(dut.clk_i, TICK)
+    assert await position_x(bus) == 15
+    assert not (await bus.rd("EVENTS")) & 1 << base.EV["refused"]
+
+
+@cocotb.test()
 async def hold_and_resume(dut):
     """PROF_CTRL.hold: a controlled stop along the path within the limits, no
     step while held at rest; release resumes the planned profile and the line
