@@ -56,7 +56,12 @@ inline constexpr uint32_t kArcBit = field_bit("cmd_flags", "arc");
 inline constexpr uint32_t kCcwBit = field_bit("cmd_flags", "ccw");
 inline constexpr uint32_t kLowWater = field_bit("events", "low_water");
 inline constexpr uint32_t kLost = field_bit("events", "overflow") | field_bit("events", "refused");
-static_assert(kRoomLsb > 0 && kPlaneLsb > 0 &&
+// STEP_TYPE's field of each axis.
+inline constexpr int kStepTypeLsb[6] = {
+    field_lsb("step_type", "axis0"), field_lsb("step_type", "axis1"),
+    field_lsb("step_type", "axis2"), field_lsb("step_type", "axis3"),
+    field_lsb("step_type", "axis4"), field_lsb("step_type", "axis5")};
+static_assert(kStepTypeLsb[0] == 0 && kStepTypeLsb[5] > 0 && kRoomLsb > 0 && kPlaneLsb > 0 &&
                   field_lsb("irq_en", "low_water") == field_lsb("events", "low_water"),
               "the register description changed under the host");
 
@@ -65,11 +70,20 @@ struct SocSetup {
   int axes = 3;
   uint32_t feed = 0;  // FEED (feed_i): 2^FEED_W is full feed
   uint32_t step_len = 0, step_space = 0, dir_setup = 0, dir_hold = 0;
+  // STEP_TYPE per axis (rtl/step_encode.sv): 0 step/dir, 1 up/down, 2 quadrature.
+  std::array<uint8_t, 6> step_type{};
   uint32_t fifo_low = 4;  // FIFO_LOW: the low-water mark the host sleeps on
   bool profile = false;   // stage each command's profile move (a PROFILE = 1 build)
   uint64_t prof_q = 0;    // PROF_Q
   uint32_t prof_len = 1;  // PROF_LEN
 };
+
+inline uint32_t step_type_word(const SocSetup& s) {
+  uint32_t w = 0;
+  for (int i = 0; i < s.axes && i < 6; ++i)
+    w |= uint32_t{s.step_type[static_cast<size_t>(i)]} << kStepTypeLsb[i];
+  return w;
+}
 
 struct HostCounts {
   uint64_t writes = 0, reads = 0, errors = 0;
@@ -149,7 +163,7 @@ class SocHost {
     put_write(regs::kStepSpace, s.step_space);
     put_write(regs::kDirSetup, s.dir_setup);
     put_write(regs::kDirHold, s.dir_hold);
-    put_write(regs::kStepType, 0);  // step/dir on every axis
+    put_write(regs::kStepType, step_type_word(s));
     put_write(regs::kFifoLow, s.fifo_low);
     put_write(regs::kIrqEn, kLowWater);
     if (s.profile) {

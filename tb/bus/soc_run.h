@@ -2,7 +2,10 @@
 // --cc` model of rtl/motion_soc_axil.sv or rtl/motion_soc_wb.sv, a bus
 // master (tb/bus/bus_master.h) and the host's transactions (tb/bus/soc_host.h)
 // clocked together, one clock edge per iteration, and the step outputs
-// (step/dir: out_a_o, out_b_o) followed on every clock.
+// (out_a_o, out_b_o, of each axis's step type) followed on every clock:
+// turned back into steps and checked against the step/dir timing set by
+// tb/monitor/step_output_monitor.h, which reports each step one clock after
+// the step stage's rise; done_o is reported one clock late as well.
 //
 // The run tells a sink, as the lockstep bench tells its MoveObserver, every
 // clock with a rising step (pulses(clock, rising, dir), then move(at,
@@ -24,6 +27,7 @@
 #include "tb/bus/bus_master.h"
 #include "tb/bus/hls_shadow.h"
 #include "tb/bus/soc_host.h"
+#include "tb/monitor/step_output_monitor.h"
 
 namespace hwinterp::tb::bus {
 
@@ -92,6 +96,10 @@ struct SocRunResult {
   models::LatticePoint end;  // the axes at the end (from the origin)
   bool timed_out = false;    // max_clocks passed first
   ShadowMismatch shadow;     // the HLS face's first difference (clock 0: none)
+  // The step outputs against the timing set, by their types: the first few
+  // violations and their count.
+  std::vector<TimingViolation> timing_violations;
+  uint64_t timing_violation_count = 0;
 };
 
 // Runs the host's program through `Model` (a Verilated motion_soc top) with
@@ -152,8 +160,14 @@ SocRunResult run_soc(Src& src, const SocSetup& setup, Sink& sink, Shadow& shadow
   master.drive(m);  // the bus idle
   reset_soc(m, [&](Model& mm) { shadow.before_edge(mm); });
   const uint32_t mask = (1u << setup.axes) - 1;
-  uint32_t prev_step = 0;
+  std::vector<StepType> types;
+  for (int i = 0; i < setup.axes; ++i)
+    types.push_back(static_cast<StepType>(setup.step_type[static_cast<size_t>(i)]));
+  StepOutputMonitors outputs(types);
+  outputs.reset(0);
+  const StepdirTiming timing{setup.step_len, setup.step_space, setup.dir_setup, setup.dir_hold};
   uint64_t quiet = 0;
+  bool done_prev = false;
   BusTxn t;
   BusRsp rsp;
   while (r.clocks < max_clocks) {
@@ -161,9 +175,9 @@ SocRunResult run_soc(Src& src, const SocSetup& setup, Sink& sink, Shadow& shadow
     const bool done = soc_clock<Probe>(m, master, shadow, ++r.clocks);
     if (shadow.failed()) break;
     if (master.take(rsp)) host.response(rsp);
-    const uint32_t step = m.out_a_o & mask, dir = m.out_b_o & mask;
-    const uint32_t rising = step & ~prev_step;
-    prev_step = step;
+    uint32_t dir = 0;
+    const uint32_t rising = outputs.observe(r.clocks, m.out_a_o & mask, m.out_b_o & mask, timing,
+                                            dir, r.timing_violations, r.timing_violation_count);
     if (rising) {
       for (int i = 0; i < setup.axes; ++i)
         if (rising >> i & 1) r.end[static_cast<size_t>(i)] += (dir >> i & 1) ? -1 : 1;
@@ -173,7 +187,9 @@ SocRunResult run_soc(Src& src, const SocSetup& setup, Sink& sink, Shadow& shadow
     } else {
       ++quiet;
     }
-    if (done) sink.done(r.completed++, r.end);
+    // done_o one clock late too, after the steps of its clock.
+    if (done_prev) sink.done(r.completed++, r.end);
+    done_prev = done;
     if (host.finished() && r.completed >= host.counts().pushes && quiet >= drain) break;
   }
   r.timed_out = r.clocks >= max_clocks;

@@ -59,6 +59,11 @@ int run_gcode(int argc, char** argv, int first) {
               "with --bus: random wait states, 0..N clocks, on the master's "
               "valid and ready signals",
               "0")
+      .option("step-types", "T[,T...]",
+              "with --bus: motion_soc's step output type (STEP_TYPE, rtl/step_encode.sv), "
+              "stepdir, updown or quad, one for every axis or one per axis; the bus run "
+              "decodes each axis's pins by its type and checks its timing",
+              "stepdir")
       .option("feed", "full|programmed",
               "full: every move at full feed (the lattice points are the same; machining time "
               "computed from the feed words); programmed: simulate the programmed feeds",
@@ -108,6 +113,22 @@ int run_gcode(int argc, char** argv, int first) {
   setup.bus_waits = static_cast<uint32_t>(args.integer("bus-waits", 0, 64));
   if (args.given("bus-waits") && setup.bus.empty())
     throw UsageError("--bus-waits: give --bus axi4lite or --bus wishbone with it");
+  if (args.given("step-types")) {
+    if (setup.bus.empty())
+      throw UsageError("--step-types: give --bus axi4lite or --bus wishbone with it");
+    const std::string v = args.str("step-types");
+    size_t from = 0;
+    while (true) {
+      const size_t comma = v.find(',', from);
+      const std::string t = v.substr(from, comma == std::string::npos ? comma : comma - from);
+      tb::StepType st;
+      if (!tb::parse_step_type(t, st))
+        throw UsageError("--step-types: '" + t + "' is not a step type (stepdir, updown, quad)");
+      setup.step_types.push_back(st);
+      if (comma == std::string::npos) break;
+      from = comma + 1;
+    }
+  }
   setup.feed_mode = args.choice("feed", {"full", "programmed"}) == "full"
                         ? gcode::FeedMode::kFull
                         : gcode::FeedMode::kProgrammed;
@@ -142,7 +163,11 @@ int run_gcode(int argc, char** argv, int first) {
                      ": the bus run takes the profile's planned moves only; give --feed-hold and "
                      "--feed-override without --bus");
   if (args.given("variant")) setup.variant = args.str("variant");
-  gcode::part_program_variant(setup);  // a bad --variant stops here
+  const tb::VariantSpec variant = gcode::part_program_variant(setup);  // a bad --variant stops here
+  if (setup.step_types.size() > 1 && setup.step_types.size() != static_cast<size_t>(variant.axes))
+    throw UsageError("--step-types: " + std::to_string(setup.step_types.size()) +
+                     " types for the " + std::to_string(variant.axes) + " axes of " +
+                     variant.variant + " (give one for every axis, or one per axis)");
 
   // Every output can be written, or nothing runs.
   trace_from_args(args, setup.bench);

@@ -473,6 +473,15 @@ BusCompare run_bus(const PartProgramSetup& setup, const tb::VariantSpec& l,
   s.step_space = static_cast<uint32_t>(t.step_space);
   s.dir_setup = static_cast<uint32_t>(t.dir_setup);
   s.dir_hold = static_cast<uint32_t>(t.dir_hold);
+  std::string types;
+  for (int i = 0; i < l.axes; ++i) {
+    const tb::StepType st = setup.step_types.empty() ? tb::StepType::kStepDir
+                            : setup.step_types.size() == 1
+                                ? setup.step_types.front()
+                                : setup.step_types[static_cast<size_t>(i)];
+    s.step_type[static_cast<size_t>(i)] = static_cast<uint8_t>(st);
+    types += std::string(i ? "," : "") + tb::step_type_name(st);
+  }
   // With the profile: its registers and each command's move, planned as
   // for the lockstep run.
   std::unique_ptr<PlannedMoves> moves;
@@ -534,6 +543,9 @@ BusCompare run_bus(const PartProgramSetup& setup, const tb::VariantSpec& l,
   b.lockstep_completed = record.done_at().size();
   b.first_point_mismatch = check.first_point();
   b.first_end_mismatch = check.first_end();
+  b.step_types = types;
+  b.timing_violations = r.timing_violations;
+  b.timing_violation_count = r.timing_violation_count;
   b.end = r.end;
   b.lockstep_end = lockstep_end;
   b.end_mismatches = prog->end_mismatches();
@@ -545,10 +557,10 @@ BusCompare run_bus(const PartProgramSetup& setup, const tb::VariantSpec& l,
   b.hls_mismatch_rtl = r.shadow.rtl;
   // EVENTS: an overflow or a refused push would be a lost command.
   b.passed = check.same() && !r.timed_out && r.shadow.clock == 0 && r.host.errors == 0 &&
-             r.host.events_read && (r.host.events & tb::bus::kLost) == 0 &&
-             r.completed == r.host.pushes && r.host.pushes == prog->compiler().totals().commands &&
-             b.end == b.lockstep_end && b.end_mismatches.empty() && prog->all_rows_written() &&
-             b.limit_failures.empty();
+             r.timing_violation_count == 0 && r.host.events_read &&
+             (r.host.events & tb::bus::kLost) == 0 && r.completed == r.host.pushes &&
+             r.host.pushes == prog->compiler().totals().commands && b.end == b.lockstep_end &&
+             b.end_mismatches.empty() && prog->all_rows_written() && b.limit_failures.empty();
   return b;
 }
 
@@ -793,6 +805,19 @@ std::string summary_table(const PartProgramSetup& setup, const PartProgramRun& r
                    (b.first_end_mismatch < 0 ? std::string(", every command ends on the same point")
                                              : ", command " + std::to_string(b.first_end_mismatch) +
                                                    " ends elsewhere")});
+    const std::string first_violation =
+        b.timing_violations.empty()
+            ? std::string()
+            : ": first " + b.timing_violations.front().rule + " on axis " +
+                  std::to_string(b.timing_violations.front().axis) + " at clock " +
+                  std::to_string(b.timing_violations.front().cycle) + ", " +
+                  std::to_string(b.timing_violations.front().measured) + " < " +
+                  std::to_string(b.timing_violations.front().required);
+    s.add_row(
+        {"bus: step outputs (STEP_TYPE " + b.step_types + ")",
+         b.timing_violation_count == 0
+             ? std::string("decoded by type, within the step timing on every clock")
+             : std::to_string(b.timing_violation_count) + " timing violations" + first_violation});
     s.add_row(
         {"bus: HLS face (hls/motion_soc.h) against the RTL",
          b.hls_mismatch_clock == 0
@@ -940,6 +965,8 @@ Json report_json(const PartProgramSetup& setup, const PartProgramRun& run) {
     j["max_contour_error_mm"] = b.contour.mm;
     j["timed_out"] = b.timed_out;
     j["hls_mismatch_clock"] = b.hls_mismatch_clock;
+    j["step_types"] = b.step_types;
+    j["timing_violations"] = b.timing_violation_count;
     j["profile"] = b.profiled;
     if (b.profiled) j["limit_failures"] = b.limit_failures;
     if (b.hls_mismatch_clock != 0) {

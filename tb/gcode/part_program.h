@@ -30,6 +30,7 @@
 #include "tb/gcode/program_file.h"
 #include "tb/lockstep/bench_options.h"
 #include "tb/lockstep/profile_feed.h"
+#include "tb/monitor/step_output_monitor.h"
 
 namespace hwinterp::gcode {
 
@@ -60,6 +61,9 @@ struct PartProgramSetup {
   // interface (tb/bus/): "axi4lite" or "wishbone"; empty: not.
   std::string bus;
   uint32_t bus_waits = 0;  // the bus master's random wait states, 0..N clocks each
+  // The bus run's STEP_TYPE: one type for every axis, or one per axis of the
+  // variant (the machine's axes first); empty: step/dir.
+  std::vector<tb::StepType> step_types;
 };
 
 // The feed profile of a run (machine.profile not off): its registers, the
@@ -129,7 +133,12 @@ struct BusCompare {
   uint64_t points = 0, lockstep_points = 0;        // visited lattice points
   uint64_t completed = 0, lockstep_completed = 0;  // commands completed (done_o)
   int64_t first_point_mismatch = -1;               // the first point that differs; -1: none
-  int64_t first_end_mismatch = -1;         // the first command that ended elsewhere; -1: none
+  int64_t first_end_mismatch = -1;  // the first command that ended elsewhere; -1: none
+  std::string step_types;           // STEP_TYPE per axis, e.g. "quad,updown,stepdir"
+  // The step outputs of those types against the timing set (every clock):
+  // the first few violations and their count.
+  std::vector<tb::TimingViolation> timing_violations;
+  uint64_t timing_violation_count = 0;
   std::vector<int64_t> end, lockstep_end;  // the axes at the end
   std::vector<uint64_t> end_mismatches;    // moves off their rounded programmed end (bus run)
   ContourMax contour;                      // the bus run's own

@@ -100,6 +100,23 @@ TEST_P(SocBusGcode, EdgeWidthsReachTheLockstepLatticePoints) {
   expect_bus_met_lockstep(j, GetParam(), false);  // 14 commands: the FIFO holds 16
 }
 
+// Every step output type (STEP_TYPE, rtl/step_encode.sv) on the axes of
+// motion_top_n4: the bus run decodes each axis's out_a/out_b by its type
+// (tb/monitor/step_output_monitor.h), meets the lockstep run's lattice
+// points and keeps each type's timing on every clock.
+TEST_P(SocBusGcode, StepTypesDecodeToTheLockstepLatticePoints) {
+  const std::string dir = scratch_dir("soc_bus_types_" + GetParam());
+  const CliResult r =
+      run_hwinterp("gcode " + kData + "modal.ngc --mode direct --progress 0 --bus " + GetParam() +
+                   " --step-types quad,updown,stepdir,quad --json " + dir + "/run.json");
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  const auto j = nlohmann::json::parse(slurp(dir + "/run.json"));
+  expect_bus_met_lockstep(j, GetParam(), false);
+  EXPECT_EQ(j.at("bus").at("step_types").get<std::string>(), "quad,updown,stepdir,quad");
+  EXPECT_EQ(j.at("bus").at("timing_violations").get<uint64_t>(), 0u);
+  EXPECT_NE(r.out.find("STEP_TYPE quad,updown,stepdir,quad"), std::string::npos) << r.out;
+}
+
 INSTANTIATE_TEST_SUITE_P(Buses, SocBusGcode, ::testing::Values("axi4lite", "wishbone"));
 
 TEST(SocBusCli, BadBusOptionsExit2NamingThem) {
@@ -115,6 +132,18 @@ TEST(SocBusCli, BadBusOptionsExit2NamingThem) {
       run_hwinterp("gcode " + kData + "arcs.ngc --progress 0 --bus wishbone --bus-waits 65");
   EXPECT_EQ(n.code, 2);
   EXPECT_NE(n.err.find("65"), std::string::npos) << n.err;
+  const CliResult t =
+      run_hwinterp("gcode " + kData + "arcs.ngc --progress 0 --bus axi4lite --step-types quad,pwm");
+  EXPECT_EQ(t.code, 2);
+  EXPECT_NE(t.err.find("'pwm'"), std::string::npos) << t.err;
+  const CliResult nb = run_hwinterp("gcode " + kData + "arcs.ngc --progress 0 --step-types quad");
+  EXPECT_EQ(nb.code, 2);
+  EXPECT_NE(nb.err.find("--step-types"), std::string::npos) << nb.err;
+  const CliResult c = run_hwinterp("gcode " + kData +
+                                   "arcs.ngc --progress 0 --bus wishbone --step-types quad,updown");
+  EXPECT_EQ(c.code, 2);
+  EXPECT_NE(c.err.find("2 types"), std::string::npos) << c.err;
+  EXPECT_EQ(c.out.find("lockstep"), std::string::npos) << "ran something: " << c.out;
 }
 
 // The check itself: a different step, a different grouping, a command ending
