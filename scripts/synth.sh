@@ -49,7 +49,9 @@
 #      (scripts/synth/make_harness.py: the core behind a few registered pins),
 #      the same for every family;
 #      (ice40) `synth_ice40` of it and nextpnr-ice40 --hx8k --package ct256 per
-#      seed: placed LUT/FF/LC and "Max frequency for clock".
+#      seed: placed LUT/FF/LC and "Max frequency for clock". A design that
+#      does not fit is a result (the table says so, naming what it needs more
+#      of), recorded once: the other seeds place the same netlist.
 #   4. (ice40) the same netlist with nextpnr-ice40 --up5k --package sg48: fits
 #      or not.
 #   5. (ecp5) YoWASP Yosys `synth_ecp5` of the bare core (LUT4 / CCU2C / FF /
@@ -280,11 +282,25 @@ run_step() {
   awk -v s="$step" -v a="$t0" -v b="$t1" 'BEGIN { printf "%s\t%.2f\n", s, b - a }' >>"$vdir/times.tsv"
 }
 
+# over_capacity LOG: the resources nextpnr's "Device utilisation" says a
+# design needs more of than the device has ("ICESTORM_LC 10159/7680 ..."),
+# empty if none.
+over_capacity() {
+  awk '/Device utilisation/ { u = 1; next } u && !NF { exit }
+    u && match($0, /[A-Z_0-9]+: *[0-9]+\/ *[0-9]+/) {
+      split(substr($0, RSTART, RLENGTH), f, /[:\/ ]+/)
+      if (f[2] + 0 > f[3] + 0) printf "%s %s/%s ", f[1], f[2], f[3]
+    }' "$1"
+}
+
 # pnr_seeds FAMILY CMD...: CMD per seed (with --seed/--json/--report appended
 # by the caller's arguments), each with the timeout; a time-out is recorded
-# as a seed not routed, any other failure stops the script.
+# as a seed not routed; a design that does not fit the device is recorded
+# once (the first seed: the netlist is the same for every seed, so is the
+# utilisation nextpnr checks before it places) and the family's other seeds
+# are not run; any other failure stops the script.
 pnr_seeds() {
-  local fam=$1 s plog t0 rc
+  local fam=$1 s plog t0 rc over
   shift
   for s in "${seed_list[@]}"; do
     plog=$vdir/pnr_${fam}_seed$s.log
@@ -295,6 +311,12 @@ pnr_seeds() {
     if [ $rc -eq 124 ]; then
       printf '%s_timeout_seed%s\t%s\n' "$fam" "$s" "$pnr_timeout" >>"$vdir/info.tsv"
       echo "synth: $variant: nextpnr ($fam) seed $s did not finish routing in $pnr_timeout s (recorded as not routed; $plog)" >&2
+    elif [ $rc -ne 0 ] && over=$(over_capacity "$plog") && [ -n "$over" ]; then
+      printf '%s_nofit_seed%s\tdoes not fit: %s\n' "$fam" "$s" "${over% }" >>"$vdir/info.tsv"
+      echo "synth: $variant: does not fit the $fam: ${over% } (recorded; $plog)" >&2
+      awk -v s="pnr_${fam}_seed$s" -v a="$t0" -v b="$(date +%s.%N)" \
+        'BEGIN { printf "%s\t%.2f\n", s, b - a }' >>"$vdir/times.tsv"
+      return 0
     elif [ $rc -ne 0 ]; then
       echo "synth: step 'pnr_${fam}_seed$s' failed for $variant; see $plog" >&2
       grep -m5 -E 'ERROR|Error|error:' "$plog" >&2 || tail -n 5 "$plog" >&2
@@ -453,11 +475,7 @@ for variant in "${variants[@]}" "${peers[@]}"; do
     if nextpnr-ice40 --up5k --package sg48 --json "$vdir/harness.json" --seed "$s" --freq "$freq" \
       --timing-allow-fail --report "$vdir/pnr_up5k_seed$s.json" >"$ulog" 2>&1; then
       printf 'up5k_fit\tyes\n' >>"$vdir/info.tsv"
-    elif over=$(awk '/Device utilisation/ { u = 1; next } u && !NF { exit }
-        u && match($0, /[A-Z_0-9]+: *[0-9]+\/ *[0-9]+/) {
-          split(substr($0, RSTART, RLENGTH), f, /[:\/ ]+/)
-          if (f[2] + 0 > f[3] + 0) printf "%s %s/%s ", f[1], f[2], f[3]
-        }' "$ulog") && [ -n "$over" ]; then
+    elif over=$(over_capacity "$ulog") && [ -n "$over" ]; then
       printf 'up5k_fit\tno\nup5k_reason\tdoes not fit: %s\n' "${over% }" >>"$vdir/info.tsv"
     else
       echo "synth: step 'pnr_up5k_seed$s' failed for $variant; see $ulog" >&2

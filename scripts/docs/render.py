@@ -483,7 +483,7 @@ def r_synth_paths(_):
             continue
         for p in seeds:
             rows.append(["`%s`" % r["variant"], p["seed"],
-                         "%.2f" % p["fmax_mhz"] if "fmax_mhz" in p else "no route",
+                         publish.seed_text(p),
                          publish.path_text(p.get("critical_path"))])
     return table(["variant", "seed", "HX8K Fmax (MHz)", "critical path: from -> to"], rows)
 

@@ -103,6 +103,13 @@ def path_text(cp):
         short(cp["from_net"]), short(cp["to_cell"]), steps, cp["logic_ns"], cp["routing_ns"])
 
 
+def seed_text(p):
+    """A seed's Fmax in a table cell: MHz, "no route" (timed out) or "does not fit"."""
+    if "fmax_mhz" in p:
+        return "%.2f" % p["fmax_mhz"]
+    return "does not fit" if "no_fit" in p else "no route"
+
+
 def target(r):
     return TARGET_MHZ.get(r["core"], DEFAULT_TARGET_MHZ)
 
@@ -168,7 +175,7 @@ def render(results, peers=()):
     missed = []
     for r in results:
         c, h, u = r["ice40_core"], r["harness"], r["up5k"]
-        fm = " / ".join("%.2f" % p["fmax_mhz"] if "fmax_mhz" in p else "no route" for p in h["hx8k"])
+        fm = " / ".join(seed_text(p) for p in h["hx8k"])
         t = target(r)
         ok = h["fmax_min_mhz"] is not None and h["fmax_min_mhz"] >= t and \
             all("fmax_mhz" in p for p in h["hx8k"])
@@ -181,7 +188,8 @@ def render(results, peers=()):
             up = "does not fit (%s LUT4 with the harness)" % u.get("lut4", "?")
         out.append("| `%s` | %d / %d / %d / %d | %s | %d MHz: %s | %s | %s | %s, `%s` |" % (
             r["variant"], c["lut4"], c["carry"], c["ff"], c.get("bram", 0), fm, t,
-            "met" if ok else "missed", path_text(h["hx8k"][0].get("critical_path")), up,
+            "met" if ok else "missed", h["hx8k"][0].get("no_fit") or
+            path_text(h["hx8k"][0].get("critical_path")), up,
             r.get("date", "?"), (r.get("rtl_sha256") or "?")[:8]))
     axis = per_axis_rows(results)
     if axis:
@@ -208,7 +216,7 @@ def render_columns(names, by_name):
                                  r["ice40_core"]["ff"]) for r in rs),
            "| HX8K Fmax, seeds %s (MHz) | %s |" % (
                "/".join(str(p["seed"]) for p in rs[0]["harness"]["hx8k"]), " | ".join(
-                   " / ".join("%.2f" % p["fmax_mhz"] if "fmax_mhz" in p else "no route"
+                   " / ".join(seed_text(p)
                               for p in r["harness"]["hx8k"]) for r in rs))]
     if all("ecp5" in r for r in rs):
         out += ["| ECP5 core LUT4 / CCU2C / FF | %s |" % " | ".join(
@@ -216,7 +224,7 @@ def render_columns(names, by_name):
                                       r["ecp5"]["core"]["ff"]) for r in rs),
                 "| ECP5 Fmax, seeds %s (MHz) | %s |" % (
                     "/".join(str(p["seed"]) for p in rs[0]["ecp5"]["runs"]), " | ".join(
-                        " / ".join("%.2f" % p["fmax_mhz"] if "fmax_mhz" in p else "no route"
+                        " / ".join(seed_text(p)
                                    for p in r["ecp5"]["runs"]) for r in rs))]
     out += ["", "<!-- end synth-columns -->"]
     return "\n".join(out)

@@ -35,7 +35,8 @@ JSON keys per record (besides the iCE40 ones: ice40_core, harness, up5k):
                           to_src (its declaration, file:line), from_net,
                           to_cell (Yosys' automatic names cut before the first
                           cell-type part), lut_levels, carry_steps, mux_levels,
-                          logic_ns, routing_ns}; or {seed, timeout_s}
+                          logic_ns, routing_ns}; or {seed, timeout_s}; or
+                          {seed, no_fit: "does not fit: ..."} (the only run)
     fmax_min_mhz, fmax_max_mhz
   peer                    (peers only) how the peer was elaborated: package and
                           versions, module, configuration, what was replaced,
@@ -307,6 +308,10 @@ def seed_runs(vdir, info, family, netlist=None):
         if "%s_timeout_seed%s" % (family, s) in info:
             runs.append({"seed": int(s), "timeout_s": int(info["%s_timeout_seed%s" % (family, s)])})
             continue
+        if "%s_nofit_seed%s" % (family, s) in info:
+            # synth.sh runs no other seed of the family: the netlist is the same.
+            runs.append({"seed": int(s), "no_fit": info["%s_nofit_seed%s" % (family, s)]})
+            break
         r = pnr(os.path.join(vdir, "pnr_%s_seed%s.log" % (family, s)),
                 os.path.join(vdir, "pnr_%s_seed%s.json" % (family, s)),
                 "ecp5" if family == "ecp5" else "ice40", netlist)
@@ -404,10 +409,15 @@ def variant_result(out, variant):
     return res
 
 
+def run_text(p):
+    """One seed's result: its Fmax, no route (timed out), or does not fit."""
+    if "fmax_mhz" in p:
+        return "%.2f" % p["fmax_mhz"]
+    return p["no_fit"] if "no_fit" in p else "no route in %s s" % p.get("timeout_s", "?")
+
+
 def seeds_text(runs):
-    return ", ".join("%.2f (%d)" % (p["fmax_mhz"], p["seed"]) if "fmax_mhz" in p
-                     else "no route in %s s (%d)" % (p.get("timeout_s", "?"), p["seed"])
-                     for p in runs)
+    return ", ".join("%s (%d)" % (run_text(p), p["seed"]) for p in runs)
 
 
 def short_name(name):
@@ -618,9 +628,7 @@ def markdown(results, peers=()):
                         "%s / %s / %s of %s" % (p0.get("lut4", "?"), p0.get("ff", "?"),
                                                 p0.get("lc_used", "?"), p0.get("lc_available", "?")),
                         "%d / %d" % (h["overhead"]["lut4"], h["overhead"]["ff"]),
-                        ", ".join("%.2f (%d)" % (p["fmax_mhz"], p["seed"]) if "fmax_mhz" in p
-                                  else "no route in %s s (%d)" % (p.get("timeout_s", "?"), p["seed"])
-                                  for p in h["hx8k"]),
+                        seeds_text(h["hx8k"]),
                         "%.2f-%.2f" % (h["fmax_min_mhz"], h["fmax_max_mhz"])
                         if h["fmax_min_mhz"] is not None else "?"]
                 u = r["up5k"]
