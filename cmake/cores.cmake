@@ -50,6 +50,11 @@ hwinterp_core_variant(CORE log_stepper NAME log_stepper_n4
   PARAMS AXES=4 INT_W=10 FRAC_W=30 MUL_K=10 SEG_W=16 POS_W=32 TIM_W=16 FEED_W=16 DEFAULTS ${timing})
 hwinterp_core_variant(CORE log_stepper NAME log_stepper_edge
   PARAMS AXES=4 INT_W=11 FRAC_W=27 MUL_K=7 SEG_W=13 POS_W=27 TIM_W=5 FEED_W=7 DEFAULTS ${timing})
+# log_stepper_dsp: n4's words with MUL_K = INT_W + FRAC_W, a whole multiply a
+# clock, for the families with DSP blocks (ECP5: Yosys maps the 40x40 product
+# to MULT18X18D); on iCE40 the product is LUTs.
+hwinterp_core_variant(CORE log_stepper NAME log_stepper_dsp
+  PARAMS AXES=4 INT_W=10 FRAC_W=30 MUL_K=40 SEG_W=16 POS_W=32 TIM_W=16 FEED_W=16 DEFAULTS ${timing})
 # motion_top: lines (DDA, ACC_W-bit signed deltas, also the slaved axes'),
 # arcs (PPC rule M, COORD_W-bit signed centre and end, OPS_W-bit operation
 # counts), 3 axes (X Y Z) or 4 (X Y Z A). rtl/motion_top.sv. FEED_W = 24:

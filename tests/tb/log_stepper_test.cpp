@@ -22,7 +22,7 @@ using A = cores::log_stepper::Adapter;
 
 template <class Cfg>
 class LogStepperLockstep : public ::testing::Test {};
-using Variants = ::testing::Types<log_stepper_n4_cfg, log_stepper_edge_cfg>;
+using Variants = ::testing::Types<log_stepper_n4_cfg, log_stepper_edge_cfg, log_stepper_dsp_cfg>;
 TYPED_TEST_SUITE(LogStepperLockstep, Variants);
 
 template <class Cfg>
