@@ -365,9 +365,14 @@ module log_stepper #(
   // Two stages: pp_q registers s1 digit_cnt << MUL_K cnt (cnt < MulCyc), the
   // accumulator adds it a clock later; at cnt = MulCyc, acc_full is the
   // product (or, handed over, on the next multiply's first clock).
+  // A position's product (OpPos) starts the accumulator at its rounding
+  // constant 2^(PosSh - 1) instead of 0, so acc_full is already rounded: the
+  // position is acc_full >> PosSh, with no second add behind the
+  // accumulator's (the other products start at 0, the constant never reaches
+  // the register file: an OpPos product is written to lnew only).
   assign acc_full  = acc_q + pp_q;
-  assign acc_sum   = first_q ? '0 : acc_full;
-  assign pos_round = acc_full + (ProdW'(1) << (PosSh - 1));
+  assign acc_sum   = !first_q ? acc_full : (op == OpPos) ? ProdW'(1) << (PosSh - 1) : '0;
+  assign pos_round = acc_full;
   assign ovl       = (op == OpMul || op == OpPos) && sh[0];
   // X >= x_end, registered from the registers (X changes only on its ADDs,
   // pc 32 and 44, nine operations or more before the even EMIT reads it,
