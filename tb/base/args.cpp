@@ -151,19 +151,28 @@ double Args::real(const std::string& name, double lo, double hi) const {
   return v;
 }
 
-std::vector<int64_t> Args::integer_list(const std::string& name) const {
-  const std::string text = str(name);
-  std::vector<int64_t> out;
+std::vector<std::string> split_commas(const std::string& text) {
+  std::vector<std::string> out;
   size_t from = 0;
-  for (size_t n = 1;; ++n) {
+  while (true) {
     const size_t comma = text.find(',', from);
-    const std::string item = text.substr(from, comma == std::string::npos ? comma : comma - from);
-    const std::string where = "--" + name + ": element " + std::to_string(n) + " of '" + text + "'";
-    if (item.empty()) throw UsageError(where + " is empty");
-    out.push_back(parse_integer(item, where));
+    out.push_back(text.substr(from, comma == std::string::npos ? comma : comma - from));
     if (comma == std::string::npos) return out;
     from = comma + 1;
   }
+}
+
+std::vector<int64_t> Args::integer_list(const std::string& name) const {
+  const std::string text = str(name);
+  std::vector<int64_t> out;
+  size_t n = 0;
+  for (const std::string& item : split_commas(text)) {
+    const std::string where =
+        "--" + name + ": element " + std::to_string(++n) + " of '" + text + "'";
+    if (item.empty()) throw UsageError(where + " is empty");
+    out.push_back(parse_integer(item, where));
+  }
+  return out;
 }
 
 std::string Args::choice(const std::string& name, const std::vector<std::string>& allowed) const {

@@ -75,6 +75,10 @@ class Args {
 int64_t parse_integer(const std::string& text, const std::string& what);
 double parse_real(const std::string& text, const std::string& what);
 
+// A comma-separated list's items, in order, empty ones included ("a,,b":
+// "a", "", "b"; "": one empty item); what an empty item means is the caller's.
+std::vector<std::string> split_commas(const std::string& text);
+
 // `text` with control bytes escaped (\n, \xNN): an error message names the
 // offending value on exactly one line, whatever the value holds.
 

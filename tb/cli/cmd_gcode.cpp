@@ -116,17 +116,11 @@ int run_gcode(int argc, char** argv, int first) {
   if (args.given("step-types")) {
     if (setup.bus.empty())
       throw UsageError("--step-types: give --bus axi4lite or --bus wishbone with it");
-    const std::string v = args.str("step-types");
-    size_t from = 0;
-    while (true) {
-      const size_t comma = v.find(',', from);
-      const std::string t = v.substr(from, comma == std::string::npos ? comma : comma - from);
+    for (const std::string& t : cli::split_commas(args.str("step-types"))) {
       tb::StepType st;
       if (!tb::parse_step_type(t, st))
         throw UsageError("--step-types: '" + t + "' is not a step type (stepdir, updown, quad)");
       setup.step_types.push_back(st);
-      if (comma == std::string::npos) break;
-      from = comma + 1;
     }
   }
   setup.feed_mode = args.choice("feed", {"full", "programmed"}) == "full"

@@ -32,17 +32,11 @@ double now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
+// The list's items, empty ones left out.
 std::vector<std::string> split_list(const std::string& text) {
   std::vector<std::string> out;
-  std::string item;
-  for (const char c : text + ",") {
-    if (c != ',') {
-      item += c;
-    } else if (!item.empty()) {
-      out.push_back(item);
-      item.clear();
-    }
-  }
+  for (std::string& item : split_commas(text))
+    if (!item.empty()) out.push_back(std::move(item));
   return out;
 }
 

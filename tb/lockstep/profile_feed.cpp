@@ -10,6 +10,7 @@
 
 #include "hwinterp_profile_builds.h"
 #include "models/feed_profile_model.h"
+#include "tb/base/args.h"
 #include "tb/lockstep/harness_profile.h"
 #include "verilated.h"
 
@@ -111,10 +112,8 @@ double whole_real(const std::string& text, const std::string& what) {
 
 std::vector<OverridePoint> parse_feed_override(const std::string& text) {
   std::vector<OverridePoint> out;
-  size_t from = 0;
-  while (true) {
-    const size_t comma = text.find(',', from);
-    const std::string item = text.substr(from, comma == std::string::npos ? comma : comma - from);
+  const std::vector<std::string> items = cli::split_commas(text);
+  for (const std::string& item : items) {
     const size_t colon = item.find(':');
     if (colon == std::string::npos)
       throw std::invalid_argument("'" + item + "' is not AT:PCT (seconds:percent, e.g. 1.5:150)");
@@ -127,14 +126,10 @@ std::vector<OverridePoint> parse_feed_override(const std::string& text) {
     if (!out.empty() && p.at_s < out.back().at_s)
       throw std::invalid_argument("'" + item + "' comes before the step ahead of it");
     out.push_back(p);
-    if (comma == std::string::npos) {
-      if (models::override_word(p.percent) == 0)
-        throw std::invalid_argument("the last step '" + item +
-                                    "' stops the feed for good (the moves would never finish)");
-      break;
-    }
-    from = comma + 1;
   }
+  if (models::override_word(out.back().percent) == 0)
+    throw std::invalid_argument("the last step '" + items.back() +
+                                "' stops the feed for good (the moves would never finish)");
   return out;
 }
 

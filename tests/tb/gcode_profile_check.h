@@ -52,6 +52,27 @@ inline std::vector<std::string> step_groups(const std::string& csv) {
   return groups;
 }
 
+// A program run with the profile and without: `base` (the command with the
+// program and its machine) plus `on_args` (the profiled run's options), then
+// `base` in direct mode with the profile off, each writing its step stream
+// and JSON report into `dir` (on.csv, on.json, off.csv, off.json). Both must
+// exit 0 (call with ASSERT_NO_FATAL_FAILURE).
+struct OnOffRuns {
+  CliResult on, off;
+  nlohmann::json j_on, j_off;
+};
+inline void run_on_off(const std::string& base, const std::string& on_args, const std::string& dir,
+                       OnOffRuns& r) {
+  r.on =
+      run_hwinterp(base + on_args + " --step-times " + dir + "/on.csv --json " + dir + "/on.json");
+  ASSERT_EQ(r.on.code, 0) << r.on.out << r.on.err;
+  r.off = run_hwinterp(base + "--mode direct --profile off --step-times " + dir +
+                       "/off.csv --json " + dir + "/off.json");
+  ASSERT_EQ(r.off.code, 0) << r.off.out << r.off.err;
+  r.j_on = nlohmann::json::parse(slurp(dir + "/on.json"));
+  r.j_off = nlohmann::json::parse(slurp(dir + "/off.json"));
+}
+
 // `report`, when given, gets the profiled run's JSON report.
 inline void check_profiled_program(const ProfileCase& c, nlohmann::json* report = nullptr) {
   const std::string data = std::string(HWINTERP_SOURCE_DIR) + "/tests/data/gcode/";
@@ -59,16 +80,12 @@ inline void check_profiled_program(const ProfileCase& c, nlohmann::json* report 
       scratch_dir("gcode_profile_" + c.program + "_" + c.mode + "_" + c.profile);
   const std::string base = "gcode " + data + c.program + ".ngc --feed programmed --progress 0 " +
                            "--machine " + data + "machine_profile.json ";
-  const CliResult on =
-      run_hwinterp(base + "--mode " + c.mode + " --profile " + c.profile + " " + c.extra +
-                   " --step-times " + dir + "/on.csv --json " + dir + "/on.json");
-  ASSERT_EQ(on.code, 0) << on.out << on.err;
-  const CliResult off = run_hwinterp(base + "--mode direct --profile off --step-times " + dir +
-                                     "/off.csv --json " + dir + "/off.json");
-  ASSERT_EQ(off.code, 0) << off.out << off.err;
-  const auto j_on = nlohmann::json::parse(slurp(dir + "/on.json"));
+  OnOffRuns r;
+  ASSERT_NO_FATAL_FAILURE(
+      run_on_off(base, "--mode " + c.mode + " --profile " + c.profile + " " + c.extra, dir, r));
+  const CliResult& on = r.on;
+  const nlohmann::json &j_on = r.j_on, &j_off = r.j_off;
   if (report) *report = j_on;
-  const auto j_off = nlohmann::json::parse(slurp(dir + "/off.json"));
   EXPECT_TRUE(j_on["passed"].get<bool>()) << on.out;
   EXPECT_EQ(j_on["profile"]["kind"], c.profile);
   EXPECT_EQ(j_on["profile"]["moves"].get<uint64_t>(), j_on["commands"].get<uint64_t>());

@@ -56,13 +56,11 @@ inline void check_soc_profiled_program(const SocProfileCase& c) {
   }
   const std::string base =
       "gcode " + program + " --feed programmed --progress 0 --machine " + machine + " ";
-  const CliResult on = run_hwinterp(base + "--mode " + c.mode + " --profile scurve --bus " + c.bus +
-                                    " --step-times " + dir + "/on.csv --json " + dir + "/on.json");
-  ASSERT_EQ(on.code, 0) << on.out << on.err;
-  const CliResult off = run_hwinterp(base + "--mode direct --profile off --step-times " + dir +
-                                     "/off.csv --json " + dir + "/off.json");
-  ASSERT_EQ(off.code, 0) << off.out << off.err;
-  const auto j = nlohmann::json::parse(slurp(dir + "/on.json"));
+  OnOffRuns r;
+  ASSERT_NO_FATAL_FAILURE(
+      run_on_off(base, "--mode " + c.mode + " --profile scurve --bus " + c.bus, dir, r));
+  const CliResult& on = r.on;
+  const nlohmann::json& j = r.j_on;
   EXPECT_TRUE(j["passed"].get<bool>()) << on.out;
   EXPECT_TRUE(j["profile"]["failures"].empty()) << j["profile"]["failures"];
   const auto& b = j["bus"];
