@@ -52,8 +52,11 @@
 #      seed: placed LUT/FF/LC and "Max frequency for clock". A design that
 #      does not fit is a result (the table says so, naming what it needs more
 #      of), recorded once: the other seeds place the same netlist.
-#   4. (ice40) the same netlist with nextpnr-ice40 --up5k --package sg48: fits
-#      or not.
+#   4. (ice40) nextpnr-ice40 --up5k --package sg48: fits or not. A core that
+#      multiplies ($mul cells after proc) is mapped again with
+#      `synth_ice40 -dsp`, so its products go into the UP5K's SB_MAC16 (the
+#      HX8K has none); every other core places step 3's netlist (-dsp only
+#      acts on $mul, though its extra opt/wreduce passes move a few LUTs).
 #   5. (ecp5) YoWASP Yosys `synth_ecp5` of the bare core (LUT4 / CCU2C / FF /
 #      MULT18X18D / DP16KD) and of the harness, nextpnr-ecp5 --25k --package
 #      CABGA256 --speed 6 per seed (the Colorlight 5A-75B's LFE5U-25F-6BG256C).
@@ -469,10 +472,18 @@ for variant in "${variants[@]}" "${peers[@]}"; do
       --freq "$freq" --timing-allow-fail
 
     # 4. UP5K: not fitting is a result, not a failure; any other error is.
+    unet=$vdir/harness.json
+    if grep -q '"type": "\$mul"' "$vdir/ports.json"; then
+      unet=$vdir/harness_up5k.json
+      run_step ice40_up5k "$vdir/ice40_up5k.log" "${yowasp[@]}" "${v_ice40_yosys[@]}" -p \
+        "$read_rtl $vdir/${core}_harness.sv;
+        synth_ice40 -dsp -top ${core}_harness; delete t:\$scopeinfo; write_json $unet"
+      printf 'up5k_netlist\tsynth_ice40 -dsp\n' >>"$vdir/info.tsv"
+    fi
     s=${seed_list[0]}
     ulog=$vdir/pnr_up5k_seed$s.log
     t0=$(date +%s.%N)
-    if nextpnr-ice40 --up5k --package sg48 --json "$vdir/harness.json" --seed "$s" --freq "$freq" \
+    if nextpnr-ice40 --up5k --package sg48 --json "$unet" --seed "$s" --freq "$freq" \
       --timing-allow-fail --report "$vdir/pnr_up5k_seed$s.json" >"$ulog" 2>&1; then
       printf 'up5k_fit\tyes\n' >>"$vdir/info.tsv"
     elif over=$(over_capacity "$ulog") && [ -n "$over" ]; then

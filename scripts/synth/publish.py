@@ -181,11 +181,12 @@ def render(results, peers=()):
             all("fmax_mhz" in p for p in h["hx8k"])
         if not ok:
             missed.append(r["variant"])
+        mac = ", %d SB_MAC16" % u["dsp_used"] if u.get("dsp_used") else ""
         if u["fits"]:
-            up = "fits, %s of %s LC, %.2f MHz" % (u.get("lc_used"), u.get("lc_available"),
-                                                   u.get("fmax_mhz", 0))
+            up = "fits, %s of %s LC%s, %.2f MHz" % (u.get("lc_used"), u.get("lc_available"), mac,
+                                                     u.get("fmax_mhz", 0))
         else:
-            up = "does not fit (%s LUT4 with the harness)" % u.get("lut4", "?")
+            up = "does not fit (%s LUT4 with the harness%s)" % (u.get("lut4", "?"), mac)
         out.append("| `%s` | %d / %d / %d / %d | %s | %d MHz: %s | %s | %s | %s, `%s` |" % (
             r["variant"], c["lut4"], c["carry"], c["ff"], c.get("bram", 0), fm, t,
             "met" if ok else "missed", h["hx8k"][0].get("no_fit") or

@@ -202,14 +202,16 @@ def pnr(log_path, report_path, family="ice40", netlist=None):
     # Utilisation from the log (also there when placement failed), then the report.
     util = re.search(r"Device utilisation:\n((?:Info:.*\n)+)", log)
     for name, used, avail in re.findall(r"(\w+):\s*(\d+)/\s*(\d+)", util.group(1) if util else ""):
-        short = {"ICESTORM_LC": "lc", "SB_IO": "io", "SB_GB": "gb"}.get(name)
+        short = {"ICESTORM_LC": "lc", "SB_IO": "io", "SB_GB": "gb",
+                 "ICESTORM_DSP": "dsp"}.get(name)
         if short:
             r[short + "_used"], r[short + "_available"] = int(used), int(avail)
     if os.path.exists(report_path):
         with open(report_path) as f:
             rep = json.load(f)
         u = rep.get("utilization", {})
-        for key, name in (("ICESTORM_LC", "lc"), ("SB_IO", "io"), ("SB_GB", "gb")):
+        for key, name in (("ICESTORM_LC", "lc"), ("SB_IO", "io"), ("SB_GB", "gb"),
+                          ("ICESTORM_DSP", "dsp")):
             if key in u:
                 r[name + "_used"] = u[key]["used"]
                 r[name + "_available"] = u[key]["available"]
@@ -379,6 +381,8 @@ def variant_result(out, variant):
                       os.path.join(vdir, "pnr_up5k_seed%s.json" % s0)))
         if not up["fits"]:
             up["reason"] = info.get("up5k_reason", "")
+        if "up5k_netlist" in info:  # a core that multiplies: mapped again for the SB_MAC16
+            up["netlist"] = info["up5k_netlist"]
         res["up5k"] = up
     if "ecp5" in families:
         by_type = cells(os.path.join(vdir, "ecp5_core_stat.json"))
@@ -632,13 +636,14 @@ def markdown(results, peers=()):
                         "%.2f-%.2f" % (h["fmax_min_mhz"], h["fmax_max_mhz"])
                         if h["fmax_min_mhz"] is not None else "?"]
                 u = r["up5k"]
+                mac = ", %d SB_MAC16" % u["dsp_used"] if u.get("dsp_used") else ""
                 if u["fits"]:
-                    row.append("yes: %s LUT4, %s/%s LC, %s/%s pins, %.2f MHz (seed %d)" % (
-                        u.get("lut4"), u.get("lc_used"), u.get("lc_available"), u.get("io_used"),
-                        u.get("package_pins") or u.get("io_available"), u.get("fmax_mhz", 0),
-                        u["seed"]))
+                    row.append("yes: %s LUT4%s, %s/%s LC, %s/%s pins, %.2f MHz (seed %d)" % (
+                        u.get("lut4"), mac, u.get("lc_used"), u.get("lc_available"),
+                        u.get("io_used"), u.get("package_pins") or u.get("io_available"),
+                        u.get("fmax_mhz", 0), u["seed"]))
                 else:
-                    row.append("no, %s LUT4: %s" % (u.get("lut4"), u.get("reason", "")))
+                    row.append("no, %s LUT4%s: %s" % (u.get("lut4"), mac, u.get("reason", "")))
             else:
                 row += ["-"] * 6
         chk = r.get("netlist_check", "not run")
@@ -703,7 +708,9 @@ def markdown(results, peers=()):
                      "the placed design, LC the logic cells used. Overhead = harness netlist - "
                      "bare core.")
         notes.append("- Fmax: the last \"Max frequency for clock\" line of nextpnr (after routing), "
-                     "target %s MHz. UP5K: the same netlist, --up5k --package sg48, first seed." %
+                     "target %s MHz. UP5K: --up5k --package sg48, first seed, the same netlist, "
+                     "except for a core that multiplies: `synth_ice40 -dsp` maps its products "
+                     "to SB_MAC16." %
                      r0["harness"]["hx8k"][0].get("target_mhz", "?") if "harness" in r0 else "")
     if ecp5_md:
         notes.append("- ECP5: YoWASP Yosys `synth_ecp5` of the bare core (core columns; DSP = "
