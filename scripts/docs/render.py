@@ -488,6 +488,24 @@ def r_synth_paths(_):
     return table(["variant", "seed", "HX8K Fmax (MHz)", "critical path: from -> to"], rows)
 
 
+def r_synth_paths_ecp5(_):
+    """The ECP5 critical path at every seed of each variant that misses its ECP5 target."""
+    sys.path.insert(0, os.path.join(ROOT, "scripts", "synth"))
+    import publish  # noqa: E402
+    import synth_report  # noqa: E402  (its ECP5 path text: registers with their RTL lines)
+    with open(os.path.join(ROOT, "docs", "synth.json")) as f:
+        results = json.load(f)["variants"]
+    rows = []
+    for r in results:
+        t, runs = publish.ecp5_target(r), r.get("ecp5", {}).get("runs", [])
+        if t is None or all(p.get("fmax_mhz", 0) >= t for p in runs):
+            continue
+        for p in runs:
+            rows.append(["`%s`" % r["variant"], p["seed"], publish.seed_text(p),
+                         synth_report.ecp5_path_text(p.get("critical_path"))])
+    return table(["variant", "seed", "ECP5 Fmax (MHz)", "critical path: from -> to"], rows)
+
+
 def r_folder_graph(_):
     """tb/'s folder graph from its includes (scripts/folder_graph.py)."""
     sys.path.insert(0, os.path.join(ROOT, "scripts"))
@@ -568,6 +586,7 @@ def r_profile_programs(_):
 RENDERERS = {
     "folder-graph": ("tb", r_folder_graph),
     "synth-paths": ("docs/synth.json", r_synth_paths),
+    "synth-paths-ecp5": ("docs/synth.json", r_synth_paths_ecp5),
     "variants": ("cmake/cores.cmake", r_variants),
     "papers": ("docs/data/papers.json", r_papers),
     "reproduced": ("docs/data/reproduce.json", r_reproduced),

@@ -186,7 +186,9 @@ def render(results, peers=()):
             up = "fits, %s of %s LC%s, %.2f MHz" % (u.get("lc_used"), u.get("lc_available"), mac,
                                                      u.get("fmax_mhz", 0))
         else:
-            up = "does not fit (%s LUT4 with the harness%s)" % (u.get("lut4", "?"), mac)
+            why = u.get("reason", "")[len("does not fit"):]
+            up = "does not fit%s (%s LUT4 with the harness%s)" % (
+                why, u.get("lut4", "?"), "" if "ICESTORM_DSP" in why else mac)
         out.append("| `%s` | %d / %d / %d / %d | %s | %d MHz: %s | %s | %s | %s, `%s` |" % (
             r["variant"], c["lut4"], c["carry"], c["ff"], c.get("bram", 0), fm, t,
             "met" if ok else "missed", h["hx8k"][0].get("no_fit") or
