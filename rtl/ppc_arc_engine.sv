@@ -72,7 +72,13 @@
 // registers per axis, decided a clock ahead by compares of the registers
 // themselves (a + 1 == -1 iff a == -2, -g == 1 iff g == -1, ...), never of the
 // next values: choosing the axis (F's sign) selects flags, not COORD_W-bit
-// words. Each flag equals its compare at every clock.
+// words. Each flag equals its compare at every clock. F's two possible next
+// values (after an x step, after a y step) are summed from registers and the
+// pick selects one after the carry chains. The arc registers' enable is the
+// take and the phase (arc_en), not the operation's arithmetic: the state
+// also steps on the switch (after the closing line took |g|) and is set up
+// from whatever is offered on a last operation, values nothing reads until
+// a command is loaded.
 //
 // hls/ppc_arc_engine.h is the same arithmetic in C++ (hls/ppc_arc.h and
 // hls/motion_top.h model the look-ahead's start rule).
@@ -198,14 +204,14 @@ module ppc_arc_engine #(
   // The next operation, decided from the state.
   logic          arc;  // the arc phase
   logic          pick_x;  // the arc steps x (else y)
-  logic [PW-1:0] a_c;  // a of the picked axis
+  logic [FW-1:0] f_sx, f_sy;  // F + 2 a + 1 after an x step, after a y step
   logic          final_pass, arc_switch, entry, land, arc_last;
   logic          line_load;  // the operation loads the closing line with |g|
   logic [1:0]    dec_st, dec_wv, dec_wd;
   logic          dec_last;
   logic          take;  // the operation moves into the operation register, the state takes it
   logic          load;  // the state takes the offered command
-  logic          arc_en;  // the arc registers change
+  logic          arc_en;  // the arc registers take their next values
   logic          use_ld;  // ...to the offered command's set-up (else the stepped state)
   logic [MW-1:0] mag_x, mag_y;  // |g|
   logic          l_x_left, l_y_left, l_step_x, l_step_y, l_last;
@@ -218,7 +224,10 @@ module ppc_arc_engine #(
   assign arc        = !fin_q && !sw_q && !line_q;
   // F >= 0 picks the inward axis (a < 0), F < 0 the outward one.
   assign pick_x     = f_q[FW-1] ^ ax_q[PW-1];
-  assign a_c        = pick_x ? ax_q : ay_q;
+  // Both sums from registers; the pick only selects one (after the carry
+  // chains, not in front of them).
+  assign f_sx       = f_q + {ax_q, 1'b1};
+  assign f_sy       = f_q + {ay_q, 1'b1};
   assign final_pass = laps_q == 3'd0;
   assign arc_switch = final_pass && (pick_x ? gle0_q[0] : gle0_q[1]);
   assign entry      = pick_x ? am1_q[0] : am1_q[1];
@@ -240,7 +249,13 @@ module ppc_arc_engine #(
   assign take   = (advance_i || (!cur_q && fill_i)) && !abort_i && !fin_q;
   assign load   = ld_valid_i && !pend_q && !abort_i && (fin_q || (take && dec_last));
   assign use_ld = fin_q || dec_last;
-  assign arc_en = load || (take && arc && !arc_switch);
+  // The arc registers' enable waits on no arc arithmetic: every operation
+  // of the arc phase (the switch and a degenerate command's line load too)
+  // steps them, a closing line's operation keeps them unless it is the last,
+  // and a last operation sets them up from the offered command whether or
+  // not one is offered (the state is finished then: nothing reads them
+  // until a command is loaded). Only the data (use_ld) waits on "last".
+  assign arc_en = (take && (!line_q || l_last)) || (fin_q && ld_valid_i && !pend_q && !abort_i);
 
   assign am2  = {ay_q == PW'(-2), ax_q == PW'(-2)};
   assign ap1  = {ay_q == PW'(1), ax_q == PW'(1)};
@@ -367,7 +382,7 @@ module ppc_arc_engine #(
         gz_d   = ld_gz;
         gone_d = ld_gone;
       end else begin
-        f_d = f_q + {a_c, 1'b1};  // F += 2 p_a m_a + 1
+        f_d = pick_x ? f_sx : f_sy;  // F += 2 p_a m_a + 1
         for (int i = 0; i < 2; i++) begin
           if (pick_x == (i == 0)) begin
             am1_d[i]  = am2[i];
