@@ -469,41 +469,36 @@ def r_synth_blocks(_):
         ["module", "what", "instances", "LUT4", "carry", "FF"], rows) + ["", source(d)]
 
 
-def r_synth_paths(_):
-    """The critical path at every seed of each variant that misses its target (docs/synth.json,
-    as scripts/synth/publish.py writes it)."""
+def synth_missed_paths(family):
+    """The critical path at every seed of each variant that misses its target on a family
+    ("hx8k" or "ecp5"; docs/synth.json, as scripts/synth/publish.py writes it)."""
     sys.path.insert(0, os.path.join(ROOT, "scripts", "synth"))
-    import publish  # noqa: E402  (scripts/synth/publish.py: its path text and targets)
+    import publish  # noqa: E402  (its path texts and targets)
+    import synth_report  # noqa: E402  (the ECP5 path text: registers with their RTL lines)
     with open(os.path.join(ROOT, "docs", "synth.json")) as f:
         results = json.load(f)["variants"]
+    if family == "hx8k":
+        target, runs_of, path = publish.target, lambda r: r["harness"]["hx8k"], publish.path_text
+    else:
+        target, runs_of = publish.ecp5_target, lambda r: r.get("ecp5", {}).get("runs", [])
+        path = synth_report.ecp5_path_text
     rows = []
     for r in results:
-        seeds = r["harness"]["hx8k"]
-        if all(p.get("fmax_mhz", 0) >= publish.target(r) for p in seeds):
+        t, runs = target(r), runs_of(r)
+        if t is None or all(p.get("fmax_mhz", 0) >= t for p in runs):
             continue
-        for p in seeds:
-            rows.append(["`%s`" % r["variant"], p["seed"],
-                         publish.seed_text(p),
-                         publish.path_text(p.get("critical_path"))])
-    return table(["variant", "seed", "HX8K Fmax (MHz)", "critical path: from -> to"], rows)
+        rows += [["`%s`" % r["variant"], p["seed"], publish.seed_text(p),
+                  path(p.get("critical_path"))] for p in runs]
+    return table(["variant", "seed", "%s Fmax (MHz)" % family.upper(),
+                  "critical path: from -> to"], rows)
+
+
+def r_synth_paths(_):
+    return synth_missed_paths("hx8k")
 
 
 def r_synth_paths_ecp5(_):
-    """The ECP5 critical path at every seed of each variant that misses its ECP5 target."""
-    sys.path.insert(0, os.path.join(ROOT, "scripts", "synth"))
-    import publish  # noqa: E402
-    import synth_report  # noqa: E402  (its ECP5 path text: registers with their RTL lines)
-    with open(os.path.join(ROOT, "docs", "synth.json")) as f:
-        results = json.load(f)["variants"]
-    rows = []
-    for r in results:
-        t, runs = publish.ecp5_target(r), r.get("ecp5", {}).get("runs", [])
-        if t is None or all(p.get("fmax_mhz", 0) >= t for p in runs):
-            continue
-        for p in runs:
-            rows.append(["`%s`" % r["variant"], p["seed"], publish.seed_text(p),
-                         synth_report.ecp5_path_text(p.get("critical_path"))])
-    return table(["variant", "seed", "ECP5 Fmax (MHz)", "critical path: from -> to"], rows)
+    return synth_missed_paths("ecp5")
 
 
 def r_folder_graph(_):

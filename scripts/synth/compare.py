@@ -18,7 +18,8 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import publish  # noqa: E402  (seed_text, per_axis_rows)
+import publish  # noqa: E402  (seed_text)
+import synth_report  # noqa: E402  (axis_pairs, per_axis)
 
 
 def load(spec):
@@ -47,11 +48,10 @@ def fmax(r, family):
 
 
 def per_axis(results):
-    rows = {}
-    for line in publish.per_axis_rows(results):
-        cells = [c.strip() for c in line.strip("|").split("|")]
-        rows[cells[0]] = cells[2]
-    return rows
+    """{core: "LUT4 / carry / FF" per axis on iCE40}, as publish.py's per-axis rows."""
+    return {core: " / ".join("%.0f" % v for v in
+                             synth_report.per_axis(lo, hi, "ice40").values())
+            for core, (lo, hi) in synth_report.axis_pairs(results).items()}
 
 
 def main():
@@ -77,14 +77,14 @@ def main():
             print("| `%s` | removed | | |" % v)
             continue
         print("| `%s` | %s -> %s | %s -> %s | %s -> %s |" % (
-            v, area(b) if b else "-", area(n), fmax(b, "hx8k") if b else "-", fmax(n, "hx8k"),
-            fmax(b, "ecp5") if b else "-", fmax(n, "ecp5")))
+            v, area(b), area(n), fmax(b, "hx8k"), fmax(n, "hx8k"), fmax(b, "ecp5"),
+            fmax(n, "ecp5")))
     pb, pn = per_axis(old), per_axis(new)
     if pn:
         print("\n| core | iCE40 LUT4 / carry / FF per axis |")
         print("|---|---|")
         for core, text in pn.items():
-            print("| %s | %s -> %s |" % (core, pb.get(core, "-"), text))
+            print("| `%s` | %s -> %s |" % (core, pb.get(core, "-"), text))
 
 
 if __name__ == "__main__":

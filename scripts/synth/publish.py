@@ -33,7 +33,8 @@ import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from synth_report import ROOT, render_ecp5_table, render_peer_rows, rtl_digest  # noqa: E402
+from synth_report import (ROOT, axes_of, axis_pairs, per_axis, render_ecp5_table,  # noqa: E402
+                          render_peer_rows, rtl_digest)
 
 PUBLISHED = os.path.join(ROOT, "docs", "synth.json")
 # The page with the synthesis table, and every page that may hold synth-columns blocks.
@@ -145,23 +146,14 @@ def ecp5_section(results, peers):
 
 
 def per_axis_rows(results):
-    """LUT4/carry/FF per axis from two variants of one core that differ only in AXES."""
+    """LUT4/carry/FF per axis from two variants of one core that differ only in AXES
+    (synth_report.axis_pairs and per_axis, as the peer rows compute it)."""
     rows = []
-    for i, a in enumerate(results):
-        for b in results[i + 1:]:
-            if a["core"] != b["core"]:
-                continue
-            pa = {k: v for k, v in a["params"].items() if k != "AXES"}
-            pb = {k: v for k, v in b["params"].items() if k != "AXES"}
-            na, nb = int(a["params"]["AXES"]), int(b["params"]["AXES"])
-            if pa != pb or na == nb:
-                continue
-            lo, hi = (a, b) if na < nb else (b, a)
-            d = abs(nb - na)
-            per = {k: (hi["ice40_core"][k] - lo["ice40_core"][k]) / d
-                   for k in ("lut4", "carry", "ff")}
-            rows.append("| `%s` | `%s` - `%s`, / %d | %.0f / %.0f / %.0f |" % (
-                a["core"], hi["variant"], lo["variant"], d, per["lut4"], per["carry"], per["ff"]))
+    for core, (lo, hi) in axis_pairs(results).items():
+        per = per_axis(lo, hi, "ice40")
+        rows.append("| `%s` | `%s` - `%s`, / %d | %.0f / %.0f / %.0f |" % (
+            core, hi["variant"], lo["variant"], axes_of(hi) - axes_of(lo), per["lut4"],
+            per["carry"], per["ff"]))
     return rows
 
 
