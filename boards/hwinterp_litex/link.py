@@ -176,28 +176,43 @@ def _fix_record_receiver(receiver):
 
 class UartEtherbone(LiteXModule):
     """rtl/link/uart_etherbone.sv: Etherbone in SLIP frames with a CRC-32 over
-    a UART (8N1 at `baud`); its Wishbone master is `bus`."""
+    a UART (8N1 at `baud`); its Wishbone master is `bus`. With `counters`,
+    its frame and error counters are CSRs (frames run, frames dropped, bus
+    errors)."""
 
-    def __init__(self, platform, pads, clk_hz: int, baud: int):
+    def __init__(self, platform, pads, clk_hz: int, baud: int, counters=True):
         self.bus = bus = wishbone.Interface(data_width=32, adr_width=30)
+        cnt_w = 16
+        frames_run, frames_bad, bus_errors = Signal(cnt_w), Signal(cnt_w), Signal(cnt_w)
+        busy = Signal()
         self.specials += Instance(
             "uart_etherbone",
             name="uart_etherbone",
             p_CLK_HZ=_param(clk_hz),
             p_BAUD=_param(baud),
+            p_CNT_W=_param(cnt_w),
             i_clk_i=ClockSignal("sys"),
             i_rst_ni=~ResetSignal("sys"),
-            i_uart_rx_i=pads.rx,
-            o_uart_tx_o=pads.tx,
+            i_rx_i=pads.rx,
+            o_tx_o=pads.tx,
             o_m_cyc_o=bus.cyc, o_m_stb_o=bus.stb, o_m_we_o=bus.we, o_m_adr_o=bus.adr,
             o_m_dat_o=bus.dat_w, o_m_sel_o=bus.sel,
             i_m_dat_i=bus.dat_r, i_m_ack_i=bus.ack, i_m_err_i=bus.err,
+            o_frames_run_o=frames_run, o_frames_bad_o=frames_bad, o_bus_errors_o=bus_errors,
+            o_busy_o=busy,
         )
+        if counters:
+            self._frames_run = CSRStatus(cnt_w, description="Frames that passed every check and ran.")
+            self._frames_bad = CSRStatus(cnt_w, description="Frames dropped (CRC, framing, escape, length, format, busy).")
+            self._bus_errors = CSRStatus(cnt_w, description="Accesses the bus answered with an error.")
+            self.comb += [self._frames_run.status.eq(frames_run),
+                          self._frames_bad.status.eq(frames_bad),
+                          self._bus_errors.status.eq(bus_errors)]
         for path in rtl.file_list("link/uart_etherbone"):
             platform.add_source(path)
 
 
-def add_uart_link(soc, pads, baud: int):
+def add_uart_link(soc, pads, baud: int, counters=True):
     """The UART Etherbone bridge on `pads` (rx, tx), then the guard."""
-    soc.uart_link = UartEtherbone(soc.platform, pads, soc.clk_freq, baud)
+    soc.uart_link = UartEtherbone(soc.platform, pads, soc.clk_freq, baud, counters=counters)
     return _add_guarded_master(soc, "uart_link", soc.uart_link.bus)

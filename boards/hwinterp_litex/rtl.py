@@ -19,13 +19,19 @@ REGS = os.path.join(RTL, "regs")
 
 
 def file_list(name: str) -> list[str]:
-    """The absolute paths of rtl/<name>.f, in order (comments skipped)."""
+    """The absolute paths of rtl/<name>.f, in order (comments skipped; each
+    path relative to the list's own folder); a block without a list is
+    rtl/<name>.sv alone (as scripts/formal.sh takes it)."""
     path = os.path.join(RTL, name + ".f")
     if not os.path.exists(path):
-        raise FileNotFoundError(f"no RTL file list {path}")
+        single = os.path.join(RTL, name + ".sv")
+        if os.path.exists(single):
+            return [single]
+        raise FileNotFoundError(f"no RTL file list {path} (nor {single})")
     with open(path) as f:
         names = [line.strip() for line in f if line.strip() and not line.startswith("#")]
-    return [os.path.join(RTL, n) for n in names]
+    here = os.path.dirname(path)
+    return [os.path.normpath(os.path.join(here, n)) for n in names]
 
 
 @dataclass(frozen=True)
