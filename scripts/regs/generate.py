@@ -197,7 +197,7 @@ def main(argv):
     for rel in stale:
         print(f"{rel}: stale or missing: run {ME} and commit")
     if not stale:
-        print(f"regs: {len(OUTPUTS)} files are what {RDL} gives")
+        print(f"regs: {len(OUTPUTS)} files are what {RDL} and the board map ({BOARD_RDL[-1]}) give")
     return 1 if stale else 0
 
 

@@ -146,8 +146,7 @@ def cmd_info(args) -> int:
     print(f"board {s.uri} ({link_name(s.uri)})")
     why = ident.problem()
     if why:
-        print(f"  {why}")
-        print(f"  ID words: {' '.join(f'0x{v:08x}' for v in (ident.magic,))}")
+        print(f"{s.uri}: {why}", file=sys.stderr)
         return EXIT_FAILED
     print(f"  motion_soc {ident.major}.{ident.minor}, core {d['core_name']}, {ident.axes} axes, "
           f"{d['bus_name']} register block")
@@ -296,13 +295,20 @@ class Terminal:
 
 
 def check_writable(path: Optional[str], opt: str):
+    """Usage naming the option when `path` cannot be written (nothing is created)."""
     if not path:
         return
-    try:
-        with open(path, "a"):
-            pass
-    except OSError as e:
-        raise Usage(f"{opt}: cannot write '{path}': {e.strerror}")
+    if os.path.exists(path):
+        if os.path.isdir(path):
+            raise Usage(f"{opt}: '{path}' is a directory")
+        if not os.access(path, os.W_OK):
+            raise Usage(f"{opt}: cannot write '{path}'")
+        return
+    d = os.path.dirname(path) or "."
+    if not os.path.isdir(d):
+        raise Usage(f"{opt}: cannot write '{path}': no directory '{d}'")
+    if not os.access(d, os.W_OK):
+        raise Usage(f"{opt}: cannot write '{path}': directory '{d}' is not writable")
 
 
 def cmd_run(args) -> int:
@@ -390,6 +396,9 @@ def main(argv: Optional[List[str]] = None) -> int:
         return EXIT_USAGE
     except (LinkError, TimeoutError) as e:
         print(f"hwinterp-host: {one_line(e)}", file=sys.stderr)
+        return EXIT_FAILED
+    except KeyboardInterrupt:      # outside a run's own handler (e.g. while hwinterp plans)
+        print("hwinterp-host: interrupted", file=sys.stderr)
         return EXIT_FAILED
     except BrokenPipeError:
         return EXIT_FAILED

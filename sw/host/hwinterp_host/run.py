@@ -296,7 +296,7 @@ class Runner:
             res.events = base["events"]
             bad = self.fatal(base["events"])
             if bad:
-                res.failure = (f"{b.s.uri}: EVENTS.{'/'.join(bad)} set after {i} of {n_cmds} "
+                res.failure = (f"{b.s.uri}: {' and '.join('EVENTS.' + x for x in bad)} set after {i} of {n_cmds} "
                                f"commands pushed" + self._event_note(bad))
                 if "wdog" not in bad and "estop" not in bad:
                     self._abort(res.failure, failed=True)
@@ -331,7 +331,7 @@ class Runner:
         res.completed = True
         bad = self.fatal(res.events)
         if bad:
-            res.failure = f"{b.s.uri}: EVENTS.{'/'.join(bad)} set at the end"
+            res.failure = f"{b.s.uri}: {' and '.join('EVENTS.' + x for x in bad)} set at the end"
         elif res.moved != p.end:
             res.failure = (f"{b.s.uri}: the axes moved {res.moved} steps, the program's lattice "
                            f"end is {p.end}")
