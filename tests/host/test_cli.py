@@ -163,3 +163,15 @@ def test_run_a_program_end_to_end_on_the_stand_in(tmp_path, capsys):
     for k in ("program", "variant", "moves", "commands", "arcs", "programmed_time_s", "clock_hz"):
         assert r[k] == lj[k], k
     assert r["end_position"] == lj["end_position"]
+
+
+def test_plan_without_a_board(capsys):
+    """`plan`: hwinterp's plan of modal.ngc, its commands and stream words."""
+    assert main(["plan", NGC, "--machine", MACHINE, "--hwinterp", hwinterp(), "--json"]) == 0
+    j = json.loads(capsys.readouterr().out)
+    assert j["commands"] > 0 and j["moves"] >= j["commands"] // 4
+    # a push is a chunk header and a word at least: 2 words a command, and a first command
+    # that writes every staging register (4 axes: 4 deltas, 2 centre, 2 end, ops, feed, flags)
+    assert j["stream_words"] >= 2 * j["commands"] and j["max_words"] >= 1 + 11 + 1
+    assert j["packets_unlimited_fifo"] >= 1 and j["widths"]["axes"] == 4
+    assert main(["plan", "/no/such.ngc", "--machine", MACHINE]) == 2

@@ -4,6 +4,7 @@
     hwinterp-host info URI [--json]
     hwinterp-host status URI [--json]
     hwinterp-host abort URI
+    hwinterp-host plan PROG.ngc --machine M.json [--json]
     hwinterp-host run PROG.ngc --machine M.json --board URI [options]
 
 URI: udp:HOST[:PORT] (port 1234) or serial:DEV[@BAUD] (115200).
@@ -23,10 +24,10 @@ import time
 from typing import List, Optional
 
 from . import __version__
-from .board import Board, bit, fields, read_id
+from .board import Board, Stager, bit, fields, read_id
 from .gen.regs import link as G
 from .gen.regs import motion as M
-from .link import DEAD_AFTER_S, RETRY_S, LinkError, Session
+from .link import DEAD_AFTER_S, MAX_STREAM, RETRY_S, LinkError, Session, chunks_of
 from .program import ProgramError, find_hwinterp, plan
 from .report import report, write_json, write_moves_csv
 from .run import BoardMismatch, Controls, RunOptions, Runner, check_board
@@ -82,22 +83,15 @@ def make_parser() -> Parser:
     p.add_argument("uri", metavar="URI")
     add_link_options(p)
 
+    p = sub.add_parser("plan", help="plan a part program with hwinterp, no board: the commands, "
+                                    "moves and stream words it takes")
+    add_plan_options(p)
+    p.add_argument("--json", action="store_true", help="print JSON instead")
+
     p = sub.add_parser("run", help="plan a part program with hwinterp and stream it to the board",
                        epilog=KEYS_HELP)
-    p.add_argument("program", metavar="PROG.ngc", help="RS274/NGC (or, with --canon, rs274 -g output)")
-    p.add_argument("--machine", metavar="M.json", required=True, help="the machine file")
+    add_plan_options(p)
     p.add_argument("--board", metavar="URI", required=True, help="udp:HOST[:PORT] or serial:DEV[@BAUD]")
-    p.add_argument("--canon", action="store_true", help="PROG is LinuxCNC's canonical commands")
-    p.add_argument("--profile", choices=("scurve", "trapezoid", "off"),
-                   help="the feed profile (overrides the machine file's); needs a board with it")
-    p.add_argument("--variant", metavar="V", help="the motion_top variant the board's widths are "
-                                                   "(default: hwinterp's, the first with the "
-                                                   "machine's axes)")
-    p.add_argument("--feed", choices=("full", "programmed"), default="programmed",
-                   help="programmed: the program's feeds (default); full: every move at full feed")
-    p.add_argument("--profile-window", metavar="N", type=int, help="the profile planner's look-ahead")
-    p.add_argument("--hwinterp", metavar="PATH", help="the hwinterp executable (default: $HWINTERP, "
-                                                       "else the repository's build/tb/hwinterp)")
     p.add_argument("--json", metavar="FILE", help="the report (hwinterp gcode's keys, and 'board')")
     p.add_argument("--moves-csv", metavar="FILE", help="one row per move (hwinterp gcode's columns)")
     p.add_argument("--watchdog-ms", type=float, default=500.0,
@@ -114,6 +108,22 @@ def make_parser() -> Parser:
                    help="a position snapshot for the progress this often (default %(default)g; 0: never)")
     add_link_options(p)
     return ap
+
+
+def add_plan_options(p):
+    p.add_argument("program", metavar="PROG.ngc", help="RS274/NGC (or, with --canon, rs274 -g output)")
+    p.add_argument("--machine", metavar="M.json", required=True, help="the machine file")
+    p.add_argument("--canon", action="store_true", help="PROG is LinuxCNC's canonical commands")
+    p.add_argument("--profile", choices=("scurve", "trapezoid", "off"),
+                   help="the feed profile (overrides the machine file's); needs a board with it")
+    p.add_argument("--variant", metavar="V", help="the motion_top variant the board's widths are "
+                                                   "(default: hwinterp's, the first with the "
+                                                   "machine's axes)")
+    p.add_argument("--feed", choices=("full", "programmed"), default="programmed",
+                   help="programmed: the program's feeds (default); full: every move at full feed")
+    p.add_argument("--profile-window", metavar="N", type=int, help="the profile planner's look-ahead")
+    p.add_argument("--hwinterp", metavar="PATH", help="the hwinterp executable (default: $HWINTERP, "
+                                                       "else the repository's build/tb/hwinterp)")
 
 
 # ------------------------------------------------------------------ helpers
@@ -311,10 +321,61 @@ def check_writable(path: Optional[str], opt: str):
         raise Usage(f"{opt}: cannot write '{path}': directory '{d}' is not writable")
 
 
-def cmd_run(args) -> int:
+def check_inputs(args):
     for path, what in ((args.program, "PROG"), (args.machine, "--machine")):
         if not os.path.isfile(path):
             raise Usage(f"{what}: no file '{path}'")
+    if args.profile_window is not None and args.profile_window < 1:
+        raise Usage(f"--profile-window {args.profile_window}: must be >= 1")
+
+
+def plan_of(args, hw):
+    extra = ["--profile-window", str(args.profile_window)] if args.profile_window else []
+    return plan(hw, args.program, args.machine, profile=args.profile, variant=args.variant,
+                feed=args.feed, extra=extra, canon=args.canon)
+
+
+def cmd_plan(args) -> int:
+    check_inputs(args)
+    try:
+        hw = find_hwinterp(args.hwinterp)
+    except ProgramError as e:
+        raise Usage(str(e))
+    prog = plan_of(args, hw)
+    st = Stager(prog.axes, prog.profiled)
+    words = []
+    for c in prog.commands:
+        words.append(len(chunks_of(st.writes(c))))
+        st.commit(c)
+    # packets with an unlimited FIFO: commands while they fit the stream (the watchdog's kick too)
+    kick = len(chunks_of([(M.WDOG_KICK.addr, 1)]))
+    packets, used = 0, MAX_STREAM
+    for w in words:
+        if used + w > MAX_STREAM:
+            packets, used = packets + 1, kick
+        used += w
+    out = {"program": prog.raw.get("program"), "variant": prog.raw.get("variant"),
+           "widths": prog.widths, "clock_hz": prog.clock_hz, "profile": prog.profile,
+           "moves": len(prog.moves), "commands": len(prog.commands), "end": prog.end,
+           "stream_words": sum(words), "max_words": max(words, default=0),
+           "packets_unlimited_fifo": packets,
+           "programmed_time_s": prog.totals.get("programmed_time_s"),
+           "feed_word_time_s": prog.totals.get("feed_word_time_s")}
+    if args.json:
+        print(json.dumps(out, indent=2))
+        return EXIT_OK
+    n = len(words) or 1
+    print(f"{prog.raw.get('program')} on {prog.raw.get('variant')} ({prog.axes} axes, "
+          f"{prog.clock_hz} Hz, profile {prog.profile.get('kind', 'off')})")
+    print(f"  {len(prog.moves)} moves, {len(prog.commands)} commands, lattice end {prog.end}")
+    print(f"  {sum(words)} stream words: {sum(words) / n:.2f} a command, at most {max(words, default=0)}; "
+          f"{packets} packets if the FIFO took every command")
+    print(f"  programmed time {out['programmed_time_s']} s, from the feed words {out['feed_word_time_s']} s")
+    return EXIT_OK
+
+
+def cmd_run(args) -> int:
+    check_inputs(args)
     uri = parse_uri(args.board)
     check_writable(args.json, "--json")
     check_writable(args.moves_csv, "--moves-csv")
@@ -335,9 +396,7 @@ def cmd_run(args) -> int:
     if args.fifo_low is not None and not 0 <= args.fifo_low < ident.fifo_depth:
         raise Usage(f"--fifo-low {args.fifo_low}: the board's FIFO holds {ident.fifo_depth} "
                     f"(give 0..{ident.fifo_depth - 1})")
-    extra = ["--profile-window", str(args.profile_window)] if args.profile_window else []
-    prog = plan(hw, args.program, args.machine, profile=args.profile, variant=args.variant,
-                feed=args.feed, extra=extra, canon=args.canon)
+    prog = plan_of(args, hw)
     check_board(ident, prog, uri)
     if args.watchdog_ms * 1e-3 * prog.clock_hz > 0xFFFFFFFF:
         raise Usage(f"--watchdog-ms {args.watchdog_ms:g}: more than WDOG_PERIOD's 2^32 clocks "
@@ -389,7 +448,7 @@ def main(argv: Optional[List[str]] = None) -> int:
     ap = make_parser()
     try:
         args = ap.parse_args(argv)
-        return {"info": cmd_info, "status": cmd_status, "abort": cmd_abort,
+        return {"info": cmd_info, "status": cmd_status, "abort": cmd_abort, "plan": cmd_plan,
                 "run": cmd_run}[args.cmd](args)
     except (Usage, UriError, ProgramError, BoardMismatch) as e:
         print(f"hwinterp-host: {one_line(e)}", file=sys.stderr)
