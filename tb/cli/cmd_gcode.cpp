@@ -178,8 +178,8 @@ int run_gcode(int argc, char** argv, int first) {
     check_outputs_writable(args, {"soc-writes"});
     setup.soc_writes_path = args.str("soc-writes");
     gcode::plan_soc_writes(setup);
-    std::cout << "hwinterp gcode: " << setup.program << ": wrote " << setup.soc_writes_path
-              << " (" << variant.variant << ")\n";
+    std::cout << "hwinterp gcode: " << setup.program << ": wrote " << setup.soc_writes_path << " ("
+              << variant.variant << ")\n";
     return kExitOk;
   }
 

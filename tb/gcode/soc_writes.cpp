@@ -56,9 +56,7 @@ void write_soc_writes(MoveSource& source, const Machine& machine, const SocWrite
   models::MotionCommand c;
   while (compiler.next(c)) {
     Json writes = Json::array();
-    const auto put = [&](uint32_t addr, uint32_t v) {
-      writes.push_back({register_name(addr), v});
-    };
+    const auto put = [&](uint32_t addr, uint32_t v) { writes.push_back({register_name(addr), v}); };
     if (setup.profiled) {
       // The move follows the profile's feed word (CMD_FEED 0) and carries its
       // planned words, as the bus run's host stages them.
@@ -89,8 +87,8 @@ void write_soc_writes(MoveSource& source, const Machine& machine, const SocWrite
   j["feed_mode"] = setup.mode == FeedMode::kFull ? "full" : "programmed";
   j["axes"] = widths.axes;
   j["feed_w"] = widths.feed_w;
-  j["widths"] = {{"axes", widths.axes},     {"acc_w", widths.acc_w}, {"coord_w", widths.coord_w},
-                 {"ops_w", widths.ops_w},   {"pos_w", setup.pos_w},  {"tim_w", setup.tim_w},
+  j["widths"] = {{"axes", widths.axes},    {"acc_w", widths.acc_w}, {"coord_w", widths.coord_w},
+                 {"ops_w", widths.ops_w},  {"pos_w", setup.pos_w},  {"tim_w", setup.tim_w},
                  {"feed_w", widths.feed_w}};
   j["clock_hz"] = machine.clock_hz;
   const StepTiming& st = machine.timing;

@@ -62,12 +62,12 @@ std::vector<int64_t> displacement(std::map<std::string, uint64_t>& c, int axes) 
 
 TEST(SocWrites, MovesEndWhereTheirCommandsAndTheLockstepRunLead) {
   const std::string dir = scratch_dir("soc_writes_arcs");
-  const CliResult run = run_hwinterp(
-      "gcode " + kData + "arcs.ngc --mode direct --progress 0 --soc-writes " + dir +
-      "/run.json --moves-csv " + dir + "/moves.csv --json " + dir + "/report.json");
+  const CliResult run =
+      run_hwinterp("gcode " + kData + "arcs.ngc --mode direct --progress 0 --soc-writes " + dir +
+                   "/run.json --moves-csv " + dir + "/moves.csv --json " + dir + "/report.json");
   ASSERT_EQ(run.code, 0) << run.out << run.err;
-  const CliResult plan = run_hwinterp("gcode " + kData + "arcs.ngc --soc-writes " + dir +
-                                      "/plan.json --plan-only");
+  const CliResult plan =
+      run_hwinterp("gcode " + kData + "arcs.ngc --soc-writes " + dir + "/plan.json --plan-only");
   ASSERT_EQ(plan.code, 0) << plan.out << plan.err;
   EXPECT_EQ(slurp(dir + "/plan.json"), slurp(dir + "/run.json"));  // no run needed for the file
 
@@ -87,9 +87,9 @@ TEST(SocWrites, MovesEndWhereTheirCommandsAndTheLockstepRunLead) {
   EXPECT_EQ(f.at("clock_hz"), report.at("clock_hz"));
   EXPECT_EQ(f.at("timing").at("step_len").get<int>(), 2);
   EXPECT_EQ(f.at("profile").at("kind").get<std::string>(), "off");
-  for (const char* k : {"moves", "traverses", "feeds", "arcs", "commands", "line_commands",
-                        "arc_commands", "chord_arcs", "chords", "split_arcs", "programmed_time_s",
-                        "feed_word_time_s"})
+  for (const char* k :
+       {"moves", "traverses", "feeds", "arcs", "commands", "line_commands", "arc_commands",
+        "chord_arcs", "chords", "split_arcs", "programmed_time_s", "feed_word_time_s"})
     EXPECT_EQ(f.at("totals").at(k), report.at(k)) << k;
 
   auto cmds = replay(f.at("commands"));
@@ -115,7 +115,8 @@ TEST(SocWrites, MovesEndWhereTheirCommandsAndTheLockstepRunLead) {
     EXPECT_EQ(row[2], mv.at("kind").get<std::string>());
     for (int i = 0; i < axes; ++i) {
       // the file's lattice end, the sum of the deltas, the point the core reached
-      EXPECT_EQ(mv.at("end_steps")[static_cast<size_t>(i)].get<int64_t>(), at[static_cast<size_t>(i)])
+      EXPECT_EQ(mv.at("end_steps")[static_cast<size_t>(i)].get<int64_t>(),
+                at[static_cast<size_t>(i)])
           << "move " << m + 1 << " axis " << i;
       EXPECT_EQ(row[7 + static_cast<size_t>(i)], std::to_string(at[static_cast<size_t>(i)]))
           << "move " << m + 1 << " axis " << i;
@@ -135,9 +136,9 @@ TEST(SocWrites, MovesEndWhereTheirCommandsAndTheLockstepRunLead) {
 TEST(SocWrites, TheProfileCarriesItsRegistersAndEachCommandsMove) {
   const std::string dir = scratch_dir("soc_writes_profile");
   const std::string machine = kData + "machine_profile.json";
-  const CliResult plan = run_hwinterp("gcode " + kData + "corners.ngc --machine " + machine +
-                                      " --profile scurve --soc-writes " + dir +
-                                      "/p.json --plan-only");
+  const CliResult plan =
+      run_hwinterp("gcode " + kData + "corners.ngc --machine " + machine +
+                   " --profile scurve --soc-writes " + dir + "/p.json --plan-only");
   ASSERT_EQ(plan.code, 0) << plan.out << plan.err;
   const json f = json::parse(slurp(dir + "/p.json"));
   const json& p = f.at("profile");
@@ -190,9 +191,9 @@ TEST(SocWrites, PlanOnlyBadUseExitsTwo) {
       "max_velocity": {"X": 100, "Y": 100, "Z": 50}, "max_accel": {"X": 1000, "Y": 1000, "Z": 500},
       "max_jerk": {"X": 50000, "Y": 50000, "Z": 25000}})";
   }
-  const CliResult c = run_hwinterp("gcode " + kData + "modal.ngc --variant motion_top_edge " +
-                                   "--machine " + m3 + " --soc-writes " + dir +
-                                   "/e.json --plan-only");
+  const CliResult c =
+      run_hwinterp("gcode " + kData + "modal.ngc --variant motion_top_edge " + "--machine " + m3 +
+                   " --soc-writes " + dir + "/e.json --plan-only");
   EXPECT_EQ(c.code, 2) << c.out << c.err;
   EXPECT_NE(c.err.find("FEED_W 7"), std::string::npos) << c.err;
   EXPECT_FALSE(std::ifstream(dir + "/e.json").good());

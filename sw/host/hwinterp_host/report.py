@@ -12,7 +12,7 @@ whole). max_contour_mm stays empty: the board reports no visited points.
 from __future__ import annotations
 
 import json
-from typing import IO, List
+from typing import IO
 
 from .board import BoardId
 from .program import Program
@@ -103,9 +103,3 @@ def write_json(path: str, j: dict) -> None:
         json.dump(j, f, indent=2)
         f.write("\n")
 
-
-def moves_rows(prog: Program) -> List[List[str]]:
-    import io
-    buf = io.StringIO()
-    write_moves_csv(buf, prog, True)
-    return [line.split(",") for line in buf.getvalue().splitlines()]
