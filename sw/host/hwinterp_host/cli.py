@@ -369,7 +369,7 @@ def cmd_plan(args) -> int:
           f"{prog.clock_hz} Hz, profile {prog.profile.get('kind', 'off')})")
     print(f"  {len(prog.moves)} moves, {len(prog.commands)} commands, lattice end {prog.end}")
     print(f"  {sum(words)} stream words: {sum(words) / n:.2f} a command, at most {max(words, default=0)}; "
-          f"{packets} packets if the FIFO took every command")
+          f"{packets} packet{'s' if packets != 1 else ''} if the FIFO took every command")
     print(f"  programmed time {out['programmed_time_s']} s, from the feed words {out['feed_word_time_s']} s")
     return EXIT_OK
 
