@@ -8,11 +8,13 @@ import json
 import os
 import socket
 import subprocess
+import sys
 import threading
 
 import pytest
 
 from fake_board import FakeBoard
+from hwinterp_host import framing
 from hwinterp_host.cli import main
 from hwinterp_host.gen.regs import motion as M
 
@@ -117,6 +119,53 @@ class UdpBoard:
         self.sock.close()
 
 
+class PtyBoard:
+    """FakeBoard behind SLIP + CRC-32 frames on a pty (the host opens its other end)."""
+
+    def __init__(self, board):
+        import pty
+        import tty
+        self.board = board
+        self.master, self.slave = pty.openpty()
+        tty.setraw(self.slave)
+        self.uri = f"serial:{os.ttyname(self.slave)}@1000000"
+        self.stop = threading.Event()
+        self.th = threading.Thread(target=self.serve, daemon=True)
+
+    def serve(self):
+        import select
+        d = framing.Deframer()
+        while not self.stop.is_set():
+            r, _, _ = select.select([self.master], [], [], 0.02)
+            if r:
+                for pkt in d.feed(os.read(self.master, 4096)):
+                    reply = self.board.serve(pkt)
+                    if reply:
+                        os.write(self.master, framing.frame(reply))
+
+    def __enter__(self):
+        self.th.start()
+        return self
+
+    def __exit__(self, *exc):
+        self.stop.set()
+        self.th.join()
+        os.close(self.master)
+        os.close(self.slave)
+
+
+def test_run_over_a_uart_on_a_pty(tmp_path, capsys):
+    board = FakeBoard(axes=4, depth=16, cmd_clocks=400, clocks_per_packet=200)
+    with PtyBoard(board) as b:
+        rc = main(["run", NGC, "--machine", MACHINE, "--board", b.uri, "--hwinterp", hwinterp(),
+                   "--json", str(tmp_path / "r.json"), "--progress", "0", "--poll-ms", "1"])
+    out = capsys.readouterr()
+    assert rc == 0, out.out + out.err
+    r = json.loads((tmp_path / "r.json").read_text())
+    assert r["board"]["link"] == "serial" and r["end_position"] == board.pos == r["expected_end_position"]
+    assert r["board"]["transport_counts"]["malformed"] == 0
+
+
 def test_info_and_status_words(capsys):
     with UdpBoard(FakeBoard(axes=4, depth=16)) as b:
         assert main(["info", b.uri]) == 0
@@ -174,3 +223,42 @@ def test_plan_without_a_board(capsys):
     assert j["stream_words"] >= 2 * j["commands"] and j["max_words"] >= 1 + 11 + 1
     assert j["packets_unlimited_fifo"] >= 1 and j["widths"]["axes"] == 4
     assert main(["plan", "/no/such.ngc", "--machine", MACHINE]) == 2
+
+
+def test_signals_hold_then_abort(tmp_path):
+    """A real `hwinterp-host run` process: SIGUSR1 holds (FEED 0 without the
+    profile), SIGINT aborts (CTRL.abort_motion, the watchdog off) and the
+    command exits 1 naming it; progress lines go to stderr."""
+    import signal
+    import time
+    board = FakeBoard(axes=4, depth=16, cmd_clocks=10 ** 9, clocks_per_packet=50)
+    env = dict(os.environ, PYTHONPATH=os.path.join(ROOT, "sw", "host"))
+    with UdpBoard(board) as b:
+        p = subprocess.Popen([sys.executable, "-m", "hwinterp_host", "run", NGC, "--machine", MACHINE,
+                              "--board", b.uri, "--hwinterp", hwinterp(), "--progress", "0.05",
+                              "--json", str(tmp_path / "r.json")],
+                             env=env, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                             stderr=subprocess.PIPE, text=True)
+        try:
+            t0 = time.monotonic()
+            while board.pushes == 0 and time.monotonic() - t0 < 30:
+                time.sleep(0.02)
+            assert board.pushes > 0
+            p.send_signal(signal.SIGUSR1)
+            t0 = time.monotonic()
+            while board.regs.get(M.FEED.addr) != 0 and time.monotonic() - t0 < 10:
+                time.sleep(0.02)
+            assert board.regs[M.FEED.addr] == 0            # held
+            time.sleep(0.3)                                 # a progress line or more while held
+            p.send_signal(signal.SIGINT)
+            out, err = p.communicate(timeout=30)
+        finally:
+            if p.poll() is None:
+                p.kill()
+    assert p.returncode == 1, out + err
+    assert "FAIL: SIGINT" in out
+    assert (M.CTRL.addr, 1) in board.bus_writes and not board.fifo and board.current is None
+    assert board.regs[M.WDOG_PERIOD.addr] == 0
+    assert "moves " in err and "HOLD" in err
+    r = json.loads((tmp_path / "r.json").read_text())
+    assert r["board"]["aborted"] and r["board"]["holds"] == 1 and not r["passed"]
