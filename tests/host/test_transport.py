@@ -21,7 +21,8 @@ from hwinterp_host.transport import (SerialTransport, SerialUri, UdpTransport, U
     ("udp:board.local:4321", UdpUri("board.local", 4321)),
     ("udp:[::1]:99", UdpUri("::1", 99)),
     ("udp:[fe80::1]", UdpUri("fe80::1", 1234)),
-    ("serial:/dev/ttyUSB0", SerialUri("/dev/ttyUSB0", 115200)),
+    ("serial:/dev/ttyUSB0", SerialUri("/dev/ttyUSB0", 1000000)),
+    ("serial:/dev/ttyUSB0@115200", SerialUri("/dev/ttyUSB0", 115200)),
     ("serial:/dev/ttyUSB0@1000000", SerialUri("/dev/ttyUSB0", 1000000)),
     ("serial:/dev/pts/3@9600", SerialUri("/dev/pts/3", 9600)),
 ])

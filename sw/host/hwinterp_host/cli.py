@@ -7,7 +7,7 @@
     hwinterp-host plan PROG.ngc --machine M.json [--json]
     hwinterp-host run PROG.ngc --machine M.json --board URI [options]
 
-URI: udp:HOST[:PORT] (port 1234) or serial:DEV[@BAUD] (115200).
+URI: udp:HOST[:PORT] (port 1234) or serial:DEV[@BAUD] (1000000).
 Exit codes: 0 done; 1 a check failed (the final position differs, an
 EVENTS overflow/refused/wdog/estop bit, an abort, a dead link); 2 bad input
 (one line naming the value).

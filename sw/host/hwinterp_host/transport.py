@@ -2,7 +2,8 @@
 
     udp:HOST[:PORT]      Etherbone over UDP (LiteEth), PORT 1234 by default
     serial:DEV[@BAUD]    Etherbone over a UART in SLIP + CRC-32 frames
-                         (framing.py), 8N1, BAUD 115200 by default; DEV a
+                         (framing.py), 8N1, BAUD 1000000 by default (the rate of
+                         the project's UART boards, cmake/cores.cmake); DEV a
                          serial device or a pty (raw: no echo, no flow control)
 
 A transport sends one packet and receives whole packets; it knows nothing
@@ -21,7 +22,7 @@ from typing import Optional, Union
 from .framing import Deframer, frame
 
 DEFAULT_UDP_PORT = 1234
-DEFAULT_BAUD = 115200
+DEFAULT_BAUD = 1_000_000
 
 
 class UriError(ValueError):
