@@ -13,6 +13,7 @@ file(WRITE ${HWINTERP_GENERATED_DIR}/variants.txt.in "")
 file(WRITE ${HWINTERP_GENERATED_DIR}/blocks.txt.in "")
 file(WRITE ${HWINTERP_GENERATED_DIR}/boards.txt.in "")
 set_property(GLOBAL PROPERTY HWINTERP_BOARDS "")
+set_property(GLOBAL PROPERTY HWINTERP_BOARD_SIMS "")
 
 # hwinterp_write_generated(<name> <text>...): writes the texts, concatenated,
 # to ${HWINTERP_GENERATED_DIR}/<name>, touching the file only when it changed,
@@ -164,6 +165,39 @@ function(hwinterp_board)
   string(REPLACE ";" " " params_line "${params}")
   file(APPEND ${HWINTERP_GENERATED_DIR}/boards.txt.in
     "${B_NAME} ${B_LINK} ${B_SYS_HZ} ${B_BAUD} ${params_line}\n")
+  # Its simulation at its own clock.
+  hwinterp_board_sim(BOARD ${B_NAME} SYS_HZ ${B_SYS_HZ} BAUD ${B_BAUD})
+endfunction()
+
+# hwinterp_board_sim(BOARD <board> SYS_HZ <hz> [BAUD <baud>])
+#
+# A simulated build of a board (hwinterp board-sim --board <board>
+# --clock-hz <hz>): its gateware at another clock (and UART rate), so that
+# whole programs simulate in less time than at the board's own clock. Every
+# board has one at its own clock; cmake/cores.cmake adds others, and the
+# cache variable HWINTERP_EXTRA_BOARD_SIMS (BOARD:HZ[:BAUD];...) more
+# (scripts/board_sim.sh sets it).
+function(hwinterp_board_sim)
+  cmake_parse_arguments(S "" "BOARD;SYS_HZ;BAUD" "" ${ARGN})
+  get_property(link GLOBAL PROPERTY HWINTERP_BOARD_${S_BOARD}_LINK)
+  if(NOT link)
+    message(FATAL_ERROR "hwinterp_board_sim: no board ${S_BOARD} declared before it")
+  endif()
+  if(NOT S_SYS_HZ MATCHES "^[1-9][0-9]*$")
+    message(FATAL_ERROR "hwinterp_board_sim ${S_BOARD}: SYS_HZ '${S_SYS_HZ}' is not a clock in Hz")
+  endif()
+  if(NOT S_BAUD)
+    get_property(S_BAUD GLOBAL PROPERTY HWINTERP_BOARD_${S_BOARD}_BAUD)
+  endif()
+  set(name ${S_BOARD}_${S_SYS_HZ})
+  get_property(sims GLOBAL PROPERTY HWINTERP_BOARD_SIMS)
+  if(name IN_LIST sims)
+    return()
+  endif()
+  set_property(GLOBAL APPEND PROPERTY HWINTERP_BOARD_SIMS ${name})
+  set_property(GLOBAL PROPERTY HWINTERP_BOARD_SIM_${name}_BOARD ${S_BOARD})
+  set_property(GLOBAL PROPERTY HWINTERP_BOARD_SIM_${name}_SYS_HZ ${S_SYS_HZ})
+  set_property(GLOBAL PROPERTY HWINTERP_BOARD_SIM_${name}_BAUD ${S_BAUD})
 endfunction()
 
 # Called once after cores.cmake: publishes variants.txt and blocks.txt for scripts/synth.sh

@@ -15,7 +15,7 @@ ports instead of pads:
     stepper<i>_step, stepper<i>_dir       the step outputs of each axis
     estop, probe                          the machine's inputs
 
-Usage: python -m hwinterp_litex.sim --board NAME --out DIR [--sys-hz HZ]
+Usage: python -m hwinterp_litex.sim --board NAME --out DIR [--sys-hz HZ] [--baud B]
 writes DIR/<top>.v (the LiteX SoC) and DIR/<top>.files (the project's RTL it
 instantiates, one path a line, in order).
 """
@@ -116,6 +116,8 @@ def main(argv=None):
     ap.add_argument("--out", required=True)
     ap.add_argument("--sys-hz", type=int, default=None,
                     help="the simulated clock (default: the board's)")
+    ap.add_argument("--baud", type=int, default=None,
+                    help="a UART board's rate (default: the board's)")
     args = ap.parse_args(argv)
     try:
         cfg = board_config.board(args.board)
@@ -127,6 +129,13 @@ def main(argv=None):
             print(f"hwinterp_litex.sim: --sys-hz {args.sys_hz} must be positive", file=sys.stderr)
             return 2
         cfg = dataclasses.replace(cfg, sys_hz=args.sys_hz)
+    if args.baud is not None:
+        if cfg.link != "uart" or args.baud <= 0:
+            print(f"hwinterp_litex.sim: --baud {args.baud}: board {cfg.name} has "
+                  f"{'no UART' if cfg.link != 'uart' else 'a UART, and a rate must be positive'}",
+                  file=sys.stderr)
+            return 2
+        cfg = dataclasses.replace(cfg, baud=args.baud)
     write(cfg, args.out)
     return 0
 

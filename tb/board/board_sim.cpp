@@ -71,10 +71,10 @@ void BoardRun::observe(uint64_t clock, uint32_t a, uint32_t b, const tb::Stepdir
         ++last.steps_to_rest;
     }
   }
-  if (done) {
-    // The command's last steps come out of the encoders a clock after done
-    // (tb/monitor/step_output_monitor.h): its end position is counted a
-    // clock late, which the CSV's clock says.
+  // A command's last steps come out of the monitors a clock after motion_top's
+  // done (tb/monitor/step_output_monitor.h): its end position is counted
+  // with the clock after it, which the CSV's clock is.
+  if (done_pending_) {
     ++commands_;
     if (commands_csv_) {
       *commands_csv_ << commands_ << ',' << clock;
@@ -82,6 +82,7 @@ void BoardRun::observe(uint64_t clock, uint32_t a, uint32_t b, const tb::Stepdir
       *commands_csv_ << '\n';
     }
   }
+  done_pending_ = done;
   if (bite) bites_.push_back(Bite{clock, 0, false, 0, 0});
   if (was_stopping_ && !stopping && !bites_.empty() && !bites_.back().rested) {
     bites_.back().rested = true;

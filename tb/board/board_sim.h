@@ -77,6 +77,7 @@ class BoardRun {
   std::vector<tb::TimingViolation> violations_;
   uint64_t violation_count_ = 0;
   uint64_t commands_ = 0;
+  bool done_pending_ = false;  // done rose on the clock before
   std::unique_ptr<tb::StepTimesCsv> steps_csv_;
   std::unique_ptr<std::ofstream> commands_csv_;
   // The watchdog: each bite, the clock the controlled stop ended (the FIFO

@@ -13,6 +13,7 @@ BoardInfo info() {
       Cfg::kEthernet,
       Cfg::kSysHz,
       Cfg::kBaud,
+      Cfg::kBoardHz,
       Cfg::kAxes,
       [](const BoardSimOptions& o, const std::function<void(const std::string&)>& serving) {
         BoardSim<Cfg> sim(o);
@@ -25,14 +26,14 @@ BoardInfo info() {
 
 const std::vector<BoardInfo>& boards() {
 #define HWINTERP_BOARD_INFO(board) info<board##_board_cfg>(),
-  static const std::vector<BoardInfo> all{HWINTERP_BOARDS(HWINTERP_BOARD_INFO)};
+  static const std::vector<BoardInfo> all{HWINTERP_BOARD_SIMS(HWINTERP_BOARD_INFO)};
 #undef HWINTERP_BOARD_INFO
   return all;
 }
 
-const BoardInfo* find_board(const std::string& name) {
+const BoardInfo* find_board(const std::string& name, uint64_t hz) {
   for (const BoardInfo& b : boards())
-    if (b.name == name) return &b;
+    if (b.name == name && b.sys_hz == (hz ? hz : b.board_hz)) return &b;
   return nullptr;
 }
 

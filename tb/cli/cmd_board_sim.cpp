@@ -15,7 +15,16 @@ namespace {
 
 std::string board_names() {
   std::string s;
-  for (const auto& b : board::boards()) s += (s.empty() ? "" : ", ") + b.name;
+  for (const auto& b : board::boards())
+    if (b.sys_hz == b.board_hz) s += (s.empty() ? "" : ", ") + b.name;
+  return s;
+}
+
+// The clocks this build simulates board `name` at.
+std::string clocks_of(const std::string& name) {
+  std::string s;
+  for (const auto& b : board::boards())
+    if (b.name == name) s += (s.empty() ? "" : ", ") + std::to_string(b.sys_hz);
   return s;
 }
 
@@ -27,6 +36,9 @@ int run_board_sim(int argc, char** argv, int first) {
             "--max-clocks or --max-seconds, checking the step pins as the lockstep does.\n"
             "usage: hwinterp board-sim --board NAME [options]");
   args.option("board", "NAME", "the board (" + board_names() + ")")
+      .option("clock-hz", "HZ",
+              "the simulated clock: the board's own (default) or another this build holds "
+              "(scripts/board_sim.sh --clock-hz builds one)")
       .option("port", "N", "Etherbone boards: the UDP port on 127.0.0.1 (0: a free one)", "0")
       .option("faults", "SPEC",
               "faults injected both ways: drop=P,corrupt=P,dup=P,reorder=P (per UDP frame; per "
@@ -40,12 +52,25 @@ int run_board_sim(int argc, char** argv, int first) {
       .option("uri-file", "FILE", "also write the URI there once serving")
       .option("steps-csv", "FILE", "every step pulse: clock,axis,dir (as gcode --step-times)")
       .option("commands-csv", "FILE", "every completed command: its clock and where each axis was")
-      .option("progress", "S", "seconds between progress lines on stderr (0: none)", "10");
+      .option("progress", "S", "seconds between progress lines on stderr (0: none)", "10")
+      .flag("list", "list the simulated builds: board, clock (Hz), link, UART rate");
   if (parse_or_help(args, argc, argv, first)) return kExitOk;
+  if (args.given("list")) {
+    for (const auto& b : board::boards())
+      std::cout << b.name << ' ' << b.sys_hz << ' ' << (b.ethernet ? "etherbone" : "uart") << ' '
+                << b.baud << (b.sys_hz == b.board_hz ? " (the board's own clock)" : "") << '\n';
+    return kExitOk;
+  }
   if (!args.given("board")) throw UsageError("--board is required (" + board_names() + ")");
-  const board::BoardInfo* b = board::find_board(args.str("board"));
+  const std::string name = args.str("board");
+  if (clocks_of(name).empty())
+    throw UsageError("--board: unknown board '" + name + "' (" + board_names() + ")");
+  const uint64_t hz = args.given("clock-hz") ? static_cast<uint64_t>(args.integer("clock-hz", 1)) : 0;
+  const board::BoardInfo* b = board::find_board(name, hz);
   if (!b)
-    throw UsageError("--board: unknown board '" + args.str("board") + "' (" + board_names() + ")");
+    throw UsageError("--clock-hz " + args.str("clock-hz") + ": this build simulates " + name +
+                     " at " + clocks_of(name) + " Hz (scripts/board_sim.sh " + name +
+                     " --clock-hz " + args.str("clock-hz") + " builds it)");
   check_outputs_writable(args, {"uri-file", "steps-csv", "commands-csv"});
 
   board::BoardSimOptions o;

@@ -28,6 +28,13 @@ SIZES = 0x44            # address size 4 (bits 7:4), port size 4 (bits 3:0)
 FLAG_PF, FLAG_PR, FLAG_NR = 0x01, 0x02, 0x04
 MAX_WRITES = 255
 MAX_READS = 255
+# A record's words (writes and reads, without its two base addresses) that
+# every board takes: LiteEth's record buffer (buffer_depth 255) holds 256
+# words with the bases (a longer record spoils it: measured on the simulated
+# Colorlight, 251 writes and 3 reads pass, 252 and 3 do not), and the UART
+# bridge's 1024-byte frame buffer holds the 8-byte header, the record header,
+# the two bases, the words and the CRC: 248 words (rtl/link/uart_etherbone.sv).
+MAX_RECORD_WORDS = 248
 HEADER_BYTES = 8
 RECORD_HEADER_BYTES = 4
 BYTE_ENABLE = 0x0F
@@ -77,6 +84,7 @@ def encode(rec: Record, flags: int = 0) -> bytes:
         raise EtherboneError(f"{nw} writes: a record holds at most {MAX_WRITES}")
     if nr > MAX_READS:
         raise EtherboneError(f"{nr} reads: a record holds at most {MAX_READS}")
+
     out = bytearray(_header(flags))
     out += struct.pack(">BBBB", rec.flags & 0xFF, rec.byte_enable & 0xFF, nw, nr)
     if nw:

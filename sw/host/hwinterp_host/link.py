@@ -34,8 +34,10 @@ from .transport import Transport, TransportError
 
 SEQ_ADDR = guard.SEQ.addr           # write SEQ, read EXPECT
 STREAM_WORDS = guard.STREAM.entries  # 255 words after SEQ in one record at most
-# One record: SEQ and the stream words.
-MAX_STREAM = min(eb.MAX_WRITES - 1, STREAM_WORDS)
+# One record: SEQ, the stream words and at most MAX_PACKET_READS reads (EXPECT
+# among them), within the words a board takes in a record.
+MAX_PACKET_READS = 32
+MAX_STREAM = min(eb.MAX_RECORD_WORDS - 1 - MAX_PACKET_READS, STREAM_WORDS)
 MAX_CHUNK = 255                      # count is 8 bits
 WORD_ADDR_LIMIT = 1 << 24            # chunk targets: word addresses below 2^24 (64 MiB)
 
@@ -172,10 +174,10 @@ class Session:
     # -- plain reads
     def read(self, addrs: Sequence[int]) -> List[int]:
         """Reads with no writes (no SEQ): any number of addresses, in packets
-        of at most 255."""
+        of at most the words a board takes in a record."""
         out: List[int] = []
-        for i in range(0, len(addrs), eb.MAX_READS):
-            part = list(addrs[i:i + eb.MAX_READS])
+        for i in range(0, len(addrs), eb.MAX_RECORD_WORDS):
+            part = list(addrs[i:i + eb.MAX_RECORD_WORDS])
             n = self._plain
             self._plain += 1
 
@@ -191,8 +193,9 @@ class Session:
         guard's window they pass through it unchanged), then reads. A lost
         reply sends them again, so they may run more than once: only for
         writes that do the same when repeated (status's snapshot)."""
-        if not 0 < len(words) <= eb.MAX_WRITES or len(reads) > eb.MAX_READS:
-            raise ValueError(f"{len(words)} writes, {len(reads)} reads: 1..255 and 0..255")
+        if not 0 < len(words) or len(words) + len(reads) > eb.MAX_RECORD_WORDS:
+            raise ValueError(f"{len(words)} writes, {len(reads)} reads: at least 1 write, and "
+                             f"at most {eb.MAX_RECORD_WORDS} words in all")
         n = self._plain
         self._plain += 1
         reads = list(reads)
@@ -219,8 +222,8 @@ class Session:
             self.open()
         if len(stream) > MAX_STREAM:
             raise ValueError(f"{len(stream)} stream words: a packet holds at most {MAX_STREAM}")
-        if len(reads) + 1 > eb.MAX_READS:
-            raise ValueError(f"{len(reads)} reads: a packet holds at most {eb.MAX_READS - 1}")
+        if len(reads) + 1 > MAX_PACKET_READS:
+            raise ValueError(f"{len(reads)} reads: a packet holds at most {MAX_PACKET_READS - 1}")
         n = self.seq
         writes = [n] + list(stream)
         addrs = [SEQ_ADDR] + list(reads)
