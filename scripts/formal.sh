@@ -29,6 +29,12 @@
 #                 transparency outside the window, downstream writes only
 #                 from an open guard's data words, to the header's address
 #                 plus the word's index
+#   etherbone_engine  rtl/link/etherbone_engine.f against
+#                 rtl/formal/etherbone_engine_props.sv: nothing of a frame
+#                 runs (no bus access, no reply) unless the frame was whole
+#                 and its CRC right (an account of the frame kept by the
+#                 props file); Wishbone rules; the buffer written only while
+#                 idle, read only while busy
 #
 # Usage: scripts/formal.sh [--blocks LIST] [--depth N] [--tim-w "W..."] [--out DIR]
 #   --blocks LIST  blocks to check (default "stepdir_axis step_stage", the
@@ -59,7 +65,7 @@ usage() { sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2; exit 2; }
 stage_blocks=(stepdir_axis step_stage)
 core_blocks=(dda_line ppc_line ppc_arc fixed_ratio motion_top log_stepper)
 other_blocks=(feed_profile step_encode)  # rtl/<block>.f (or rtl/<block>.sv alone), no core contract
-link_blocks=(link_guard)  # the host link's blocks: rtl/link/<block>.f (or rtl/link/<block>.sv alone)
+link_blocks=(link_guard etherbone_engine)  # the host link's blocks: rtl/link/<block>.f (or rtl/link/<block>.sv alone)
 all_blocks=("${stage_blocks[@]}" "${core_blocks[@]}" "${other_blocks[@]}" "${link_blocks[@]}")
 
 depth=""
