@@ -35,6 +35,10 @@
 #                 and its CRC right (an account of the frame kept by the
 #                 props file); Wishbone rules; the buffer written only while
 #                 idle, read only while busy
+#   slip_rx uart_tx uart_rx  rtl/link/<block>.sv against its props: the
+#                 SLIP decoder's escape rule; the UART transmitter's bit
+#                 timing (DIV = 5); the receiver (DIV = 8) takes every
+#                 character of an ideal sender once, right, at a fixed clock
 #
 # Usage: scripts/formal.sh [--blocks LIST] [--depth N] [--tim-w "W..."] [--out DIR]
 #   --blocks LIST  blocks to check (default "stepdir_axis step_stage", the
@@ -65,7 +69,7 @@ usage() { sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2; exit 2; }
 stage_blocks=(stepdir_axis step_stage)
 core_blocks=(dda_line ppc_line ppc_arc fixed_ratio motion_top log_stepper)
 other_blocks=(feed_profile step_encode)  # rtl/<block>.f (or rtl/<block>.sv alone), no core contract
-link_blocks=(link_guard etherbone_engine)  # the host link's blocks: rtl/link/<block>.f (or rtl/link/<block>.sv alone)
+link_blocks=(link_guard etherbone_engine slip_rx uart_tx uart_rx)  # the host link's blocks: rtl/link/<block>.f (or rtl/link/<block>.sv alone)
 all_blocks=("${stage_blocks[@]}" "${core_blocks[@]}" "${other_blocks[@]}" "${link_blocks[@]}")
 
 depth=""
