@@ -53,6 +53,12 @@ module uart_etherbone #(
   end else if (Off > CLK_HZ / 50) begin : g_bad_rate
     $error("uart_etherbone: parameters CLK_HZ and BAUD must be within 2 %% of a whole DIV");
   end
+  if (BUF_BYTES < 16 || BUF_BYTES > 4096 || (BUF_BYTES & (BUF_BYTES - 1)) != 0) begin : g_bad_buf
+    $error("uart_etherbone: parameter BUF_BYTES must be a power of two, 16..4096");
+  end
+  if (CNT_W < 1 || CNT_W > 32) begin : g_bad_cnt_w
+    $error("uart_etherbone: parameter CNT_W must be 1..32");
+  end
 `endif
 
   logic       rx_valid, rx_ferr;

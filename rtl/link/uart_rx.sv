@@ -32,7 +32,7 @@ module uart_rx #(
   end
 `endif
 
-  localparam int CW = $clog2(DIV);
+  localparam int CW = DIV > 1 ? $clog2(DIV) : 1;
   localparam logic [CW-1:0] Full = CW'(DIV - 1);
   localparam logic [CW-1:0] Half = CW'(DIV / 2 - 1);
 

@@ -23,7 +23,7 @@ module uart_tx #(
   end
 `endif
 
-  localparam int CW = $clog2(DIV);
+  localparam int CW = DIV > 1 ? $clog2(DIV) : 1;
   localparam logic [CW-1:0] Full = CW'(DIV - 1);
 
   logic          busy_q, busy_d;  // a character is on the line
