@@ -242,22 +242,24 @@ struct GuardRun {
 };
 
 TEST(LinkGuard, RandomPacketsRunOnceInOrderOrNotAtAll) {
-  for (uint64_t seed = 1; seed <= 6; ++seed) {
+  for (uint64_t seed = 1; seed <= 8; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
     std::printf("LinkGuard random packets: seed %llu\n", static_cast<unsigned long long>(seed));
     GuardRun run(seed);
-    for (int p = 0; p < 120; ++p) {
+    for (int p = 0; p < 400; ++p) {
       if (run.pick(0, 2) == 0) run.outside();
       run.packet();
       if (::testing::Test::HasFailure()) break;
     }
+    std::printf("  %d taken, %d refused, %zu writes, %u dropped, %u bus errors\n", run.taken,
+                run.refused, run.expected.size(), run.model.dropped, run.model.errors);
     EXPECT_EQ(run.bench.mem.writes.size(), run.expected.size());
     EXPECT_TRUE(run.bench.mem.writes == run.expected) << "the memory's writes differ";
     EXPECT_EQ(run.bench.mem.faults, 0u);
     EXPECT_EQ(run.bench.rule_faults, 0);
     EXPECT_EQ(run.model.expect, static_cast<uint32_t>(run.taken));
-    EXPECT_GT(run.taken, 20);
-    EXPECT_GT(run.refused, 20);
+    EXPECT_GT(run.taken, 100);
+    EXPECT_GT(run.refused, 100);
     EXPECT_GT(run.model.errors, 0u) << "no forwarded write met a bus error";
     EXPECT_GT(run.model.dropped, 0u);
   }
