@@ -12,7 +12,10 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <fstream>
 #include <random>
+#include <regex>
+#include <sstream>
 
 #include "Vlink_guard.h"
 #include "link_sim.h"
@@ -324,6 +327,52 @@ TEST(LinkGuard, StreamRulesAndCounters) {
   EXPECT_EQ(rd(kStale).dat, 1u);
   EXPECT_EQ(rd(kExpect).dat, 4u);
   EXPECT_EQ(run.bench.rule_faults, 0);
+}
+
+// rtl/regs/link_guard.rdl (what the host package and the docs take the
+// window from) against the RTL: every register at the offset the guard
+// decodes, with the access the description gives it.
+TEST(LinkGuard, WindowIsWhatTheRdlDescribes) {
+  std::ifstream f(HWINTERP_LINK_GUARD_RDL);
+  ASSERT_TRUE(f) << HWINTERP_LINK_GUARD_RDL;
+  std::stringstream ss;
+  ss << f.rdbuf();
+  std::string rdl = ss.str();
+  std::map<std::string, unsigned> at;  // instance -> byte offset
+  std::regex inst(R"(\}\s*(\w+)\s*@\s*0x([0-9A-Fa-f]+)\s*;)");
+  for (auto it = std::sregex_iterator(rdl.begin(), rdl.end(), inst); it != std::sregex_iterator();
+       ++it)
+    at[(*it)[1]] = static_cast<unsigned>(std::stoul((*it)[2], nullptr, 16));
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(rdl, m, std::regex(R"(mementries\s*=\s*(\d+))")));
+  unsigned stream_words = static_cast<unsigned>(std::stoul(m[1]));
+  ASSERT_EQ(at.size(), 6u);
+  EXPECT_EQ(at["seq"], kExpect * 4);
+  EXPECT_EQ(at["stream"], 4u);
+  EXPECT_EQ(stream_words, 255u);
+  EXPECT_EQ(at["accepted"], kAccepted * 4);
+  EXPECT_EQ(at["stale"], kStale * 4);
+  EXPECT_EQ(at["dropped"], kDropped * 4);
+  EXPECT_EQ(at["errors"], kErrors * 4);
+  // The RTL at those offsets: SEQ read/write, STREAM write-only over all its
+  // words, the counters read-only, everything else in the window err.
+  GuardBench b(3, 0);
+  auto acc = [&](bool we, unsigned byte_off) {
+    return b.access(we, kWin + byte_off / 4, 0x01000000, 0xF, false, 0);
+  };
+  EXPECT_TRUE(acc(false, at["seq"]).ack);
+  EXPECT_TRUE(acc(true, at["seq"]).ack);
+  for (unsigned w = 0; w < stream_words; ++w) {
+    EXPECT_TRUE(acc(true, at["stream"] + 4 * w).ack) << "STREAM word " << w;
+    EXPECT_TRUE(acc(false, at["stream"] + 4 * w).err) << "STREAM word " << w;
+  }
+  for (const char* r : {"accepted", "stale", "dropped", "errors"}) {
+    EXPECT_TRUE(acc(false, at[r]).ack) << r;
+    EXPECT_TRUE(acc(true, at[r]).err) << r;
+  }
+  for (unsigned off = at["errors"] + 4; off < 512 * 4; off += 4) {
+    EXPECT_TRUE(acc(false, off).err && acc(true, off).err) << "byte offset " << off;
+  }
 }
 
 }  // namespace
