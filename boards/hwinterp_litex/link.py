@@ -107,11 +107,20 @@ class EthFrameDropper(LiteXModule):
 class LinkGuard(LiteXModule):
     """rtl/link/link_guard.sv between a link's Wishbone master (`upstream`,
     connect the link's master to it) and the SoC bus (`downstream`, add it as
-    a bus master)."""
+    a bus master). With `err_as_ack` the guard's err also ends the cycle as
+    an ack upstream: LiteEth's Etherbone master waits for ack only (an err
+    would hang it), so a refused access answers there as an ack that wrote
+    nothing (what it reads is of no matter); the host sees the refusal in the
+    guard's counters (docs/link.md)."""
 
-    def __init__(self, platform, win_base: int):
+    def __init__(self, platform, win_base: int, err_as_ack: bool = False):
         self.upstream = up = wishbone.Interface(data_width=32, adr_width=30)
         self.downstream = dn = wishbone.Interface(data_width=32, adr_width=30)
+        s_ack, s_err = Signal(), Signal()
+        if err_as_ack:
+            self.comb += [up.ack.eq(s_ack | s_err), up.err.eq(0)]
+        else:
+            self.comb += [up.ack.eq(s_ack), up.err.eq(s_err)]
         self.specials += Instance(
             "link_guard",
             name="link_guard",
@@ -120,7 +129,7 @@ class LinkGuard(LiteXModule):
             i_rst_ni=~ResetSignal("sys"),
             i_s_cyc_i=up.cyc, i_s_stb_i=up.stb, i_s_we_i=up.we, i_s_adr_i=up.adr,
             i_s_dat_i=up.dat_w, i_s_sel_i=up.sel,
-            o_s_dat_o=up.dat_r, o_s_ack_o=up.ack, o_s_err_o=up.err,
+            o_s_dat_o=up.dat_r, o_s_ack_o=s_ack, o_s_err_o=s_err,
             o_m_cyc_o=dn.cyc, o_m_stb_o=dn.stb, o_m_we_o=dn.we, o_m_adr_o=dn.adr,
             o_m_dat_o=dn.dat_w, o_m_sel_o=dn.sel,
             i_m_dat_i=dn.dat_r, i_m_ack_i=dn.ack, i_m_err_i=dn.err,
@@ -129,9 +138,9 @@ class LinkGuard(LiteXModule):
             platform.add_source(path)
 
 
-def _add_guarded_master(soc, name, master):
+def _add_guarded_master(soc, name, master, err_as_ack=False):
     """The guard in front of `master`, its downstream a master of the bus."""
-    guard = LinkGuard(soc.platform, rtl.board_map().link_base)
+    guard = LinkGuard(soc.platform, rtl.board_map().link_base, err_as_ack)
     setattr(soc, name + "_guard", guard)
     soc.comb += master.connect(guard.upstream)
     soc.bus.add_master(name=name, master=guard.downstream)
@@ -159,7 +168,7 @@ def add_etherbone_link(soc, phy, mac_address=0x10E2D5000000, ip_address="192.168
     soc.ethcore = ethcore
     soc.etherbone = LiteEthEtherbone(ethcore.udp, udp_port, buffer_depth=buffer_depth)
     _fix_record_receiver(soc.etherbone.record.receiver)
-    return _add_guarded_master(soc, "etherbone", soc.etherbone.wishbone.bus)
+    return _add_guarded_master(soc, "etherbone", soc.etherbone.wishbone.bus, err_as_ack=True)
 
 
 def _fix_record_receiver(receiver):
