@@ -169,16 +169,17 @@ function(hwinterp_board)
   hwinterp_board_sim(BOARD ${B_NAME} SYS_HZ ${B_SYS_HZ} BAUD ${B_BAUD})
 endfunction()
 
-# hwinterp_board_sim(BOARD <board> SYS_HZ <hz> [BAUD <baud>])
+# hwinterp_board_sim(BOARD <board> SYS_HZ <hz> [BAUD <baud>] [NO_PROFILE])
 #
 # A simulated build of a board (hwinterp board-sim --board <board>
 # --clock-hz <hz>): its gateware at another clock (and UART rate), so that
 # whole programs simulate in less time than at the board's own clock. Every
 # board has one at its own clock; cmake/cores.cmake adds others, and the
 # cache variable HWINTERP_EXTRA_BOARD_SIMS (BOARD:HZ[:BAUD];...) more
-# (scripts/board_sim.sh sets it).
+# (scripts/board_sim.sh sets it). NO_PROFILE builds it with PROFILE = 0
+# (FEED drives the feed; board-sim --no-profile), named <board>_<hz>_noprofile.
 function(hwinterp_board_sim)
-  cmake_parse_arguments(S "" "BOARD;SYS_HZ;BAUD" "" ${ARGN})
+  cmake_parse_arguments(S "NO_PROFILE" "BOARD;SYS_HZ;BAUD" "" ${ARGN})
   get_property(link GLOBAL PROPERTY HWINTERP_BOARD_${S_BOARD}_LINK)
   if(NOT link)
     message(FATAL_ERROR "hwinterp_board_sim: no board ${S_BOARD} declared before it")
@@ -190,6 +191,11 @@ function(hwinterp_board_sim)
     get_property(S_BAUD GLOBAL PROPERTY HWINTERP_BOARD_${S_BOARD}_BAUD)
   endif()
   set(name ${S_BOARD}_${S_SYS_HZ})
+  set(profile 1)
+  if(S_NO_PROFILE)
+    set(name ${name}_noprofile)
+    set(profile 0)
+  endif()
   get_property(sims GLOBAL PROPERTY HWINTERP_BOARD_SIMS)
   if(name IN_LIST sims)
     return()
@@ -198,6 +204,7 @@ function(hwinterp_board_sim)
   set_property(GLOBAL PROPERTY HWINTERP_BOARD_SIM_${name}_BOARD ${S_BOARD})
   set_property(GLOBAL PROPERTY HWINTERP_BOARD_SIM_${name}_SYS_HZ ${S_SYS_HZ})
   set_property(GLOBAL PROPERTY HWINTERP_BOARD_SIM_${name}_BAUD ${S_BAUD})
+  set_property(GLOBAL PROPERTY HWINTERP_BOARD_SIM_${name}_PROFILE ${profile})
 endfunction()
 
 # Called once after cores.cmake: publishes variants.txt and blocks.txt for scripts/synth.sh

@@ -16,6 +16,7 @@ ports instead of pads:
     estop, probe                          the machine's inputs
 
 Usage: python -m hwinterp_litex.sim --board NAME --out DIR [--sys-hz HZ] [--baud B]
+                                    [--param NAME=VALUE ...]
 writes DIR/<top>.v (the LiteX SoC) and DIR/<top>.files (the project's RTL it
 instantiates, one path a line, in order).
 """
@@ -118,6 +119,8 @@ def main(argv=None):
                     help="the simulated clock (default: the board's)")
     ap.add_argument("--baud", type=int, default=None,
                     help="a UART board's rate (default: the board's)")
+    ap.add_argument("--param", action="append", default=[], metavar="NAME=VALUE",
+                    help="a motion_soc parameter instead of the board's (e.g. PROFILE=0)")
     args = ap.parse_args(argv)
     try:
         cfg = board_config.board(args.board)
@@ -136,6 +139,15 @@ def main(argv=None):
                   file=sys.stderr)
             return 2
         cfg = dataclasses.replace(cfg, baud=args.baud)
+    params = dict(cfg.params)
+    for p in args.param:
+        name, eq, value = p.partition("=")
+        if not eq or name not in params or not value.isdigit():
+            print(f"hwinterp_litex.sim: --param {p}: not NAME=VALUE with a parameter of board "
+                  f"{cfg.name} ({', '.join(params)}) and a whole number", file=sys.stderr)
+            return 2
+        params[name] = int(value)
+    cfg = dataclasses.replace(cfg, params=params)
     write(cfg, args.out)
     return 0
 

@@ -15,6 +15,7 @@ BoardInfo info() {
       Cfg::kBaud,
       Cfg::kBoardHz,
       Cfg::kAxes,
+      Cfg::kProfile,
       [](const BoardSimOptions& o, const std::function<void(const std::string&)>& serving) {
         BoardSim<Cfg> sim(o);
         serving(sim.uri());
@@ -31,9 +32,9 @@ const std::vector<BoardInfo>& boards() {
   return all;
 }
 
-const BoardInfo* find_board(const std::string& name, uint64_t hz) {
+const BoardInfo* find_board(const std::string& name, uint64_t hz, bool profile) {
   for (const BoardInfo& b : boards())
-    if (b.name == name && b.sys_hz == (hz ? hz : b.board_hz)) return &b;
+    if (b.name == name && b.sys_hz == (hz ? hz : b.board_hz) && b.profile == profile) return &b;
   return nullptr;
 }
 

@@ -5,6 +5,8 @@
 // (hwinterp-host ... URI) as its first line.
 #include <fstream>
 #include <iostream>
+#include <set>
+#include <string>
 
 #include "tb/board/registry.h"
 #include "tb/cli/subcommand.h"
@@ -22,9 +24,11 @@ std::string board_names() {
 
 // The clocks this build simulates board `name` at.
 std::string clocks_of(const std::string& name) {
-  std::string s;
+  std::set<uint64_t> hz;
   for (const auto& b : board::boards())
-    if (b.name == name) s += (s.empty() ? "" : ", ") + std::to_string(b.sys_hz);
+    if (b.name == name) hz.insert(b.sys_hz);
+  std::string s;
+  for (uint64_t h : hz) s += (s.empty() ? "" : ", ") + std::to_string(h);
   return s;
 }
 
@@ -39,6 +43,9 @@ int run_board_sim(int argc, char** argv, int first) {
       .option("clock-hz", "HZ",
               "the simulated clock: the board's own (default) or another this build holds "
               "(scripts/board_sim.sh --clock-hz builds one)")
+      .flag("no-profile",
+            "the build without the feed profile (PROFILE = 0: FEED drives the feed), where this "
+            "build holds one (--list)")
       .option("port", "N", "Etherbone boards: the UDP port on 127.0.0.1 (0: a free one)", "0")
       .option("faults", "SPEC",
               "faults injected both ways: drop=P,corrupt=P,dup=P,reorder=P (per UDP frame; per "
@@ -58,15 +65,22 @@ int run_board_sim(int argc, char** argv, int first) {
   if (args.given("list")) {
     for (const auto& b : board::boards())
       std::cout << b.name << ' ' << b.sys_hz << ' ' << (b.ethernet ? "etherbone" : "uart") << ' '
-                << b.baud << (b.sys_hz == b.board_hz ? " (the board's own clock)" : "") << '\n';
+                << b.baud << (b.profile ? "" : " no-profile")
+                << (b.sys_hz == b.board_hz ? " (the board's own clock)" : "") << '\n';
     return kExitOk;
   }
   if (!args.given("board")) throw UsageError("--board is required (" + board_names() + ")");
   const std::string name = args.str("board");
   if (clocks_of(name).empty())
     throw UsageError("--board: unknown board '" + name + "' (" + board_names() + ")");
-  const uint64_t hz = args.given("clock-hz") ? static_cast<uint64_t>(args.integer("clock-hz", 1)) : 0;
-  const board::BoardInfo* b = board::find_board(name, hz);
+  const uint64_t hz =
+      args.given("clock-hz") ? static_cast<uint64_t>(args.integer("clock-hz", 1)) : 0;
+  const bool profile = !args.given("no-profile");
+  const board::BoardInfo* b = board::find_board(name, hz, profile);
+  if (!b && !profile && board::find_board(name, hz))
+    throw UsageError("--no-profile: this build holds " + name + " at " +
+                     (hz ? args.str("clock-hz") + " Hz" : std::string("its own clock")) +
+                     " with the feed profile only (hwinterp board-sim --list)");
   if (!b)
     throw UsageError("--clock-hz " + args.str("clock-hz") + ": this build simulates " + name +
                      " at " + clocks_of(name) + " Hz (scripts/board_sim.sh " + name +

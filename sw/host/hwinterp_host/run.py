@@ -76,6 +76,10 @@ def check_board(ident: BoardId, prog: Program, uri) -> None:
             if getattr(ident, name) != prog.profile[name]:
                 raise BoardMismatch(f"{uri}: ID_PROFILE.{name} {getattr(ident, name)}, the profile "
                                     f"was planned for {prog.profile[name]}")
+    elif ident.profile:
+        raise BoardMismatch(f"{uri}: ID_BUILD.profile 1: the board's feed profile drives the feed, "
+                            f"the program was planned without one (give --profile scurve or "
+                            f"trapezoid)")
 
 
 @dataclass
