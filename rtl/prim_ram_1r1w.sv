@@ -16,7 +16,8 @@
 //      2 * WIDTH flip-flops and WIDTH LUTs).
 //   0: the user never does it (a FIFO whose read and write pointers differ
 //      whenever both ports act); the RAM is used as it is (Yosys's
-//      no_rw_check), and simulation stops with an error if it happens.
+//      no_rw_check), and simulation stops with an error if it happens (a
+//      formal proof of the user, with FORMAL defined, asserts it instead).
 module prim_ram_1r1w #(
   parameter int WIDTH = 32,          // bits a word (>= 1)
   parameter int DEPTH = 16,          // words (>= 2)
@@ -53,6 +54,12 @@ module prim_ram_1r1w #(
       if (we_i) mem_q[waddr_i] <= wdata_i;
       if (re_i) rdata_q <= mem_q[raddr_i];
     end
+`ifdef FORMAL
+    // A proof of the user (rtl/formal/etherbone_engine_props.sv) checks it.
+    always_comb begin
+      if (we_i && re_i) a_same_word: assert(waddr_i != raddr_i);
+    end
+`else
 `ifndef SYNTHESIS
     always_ff @(posedge clk_i) begin
       if (we_i && re_i && waddr_i == raddr_i) begin
@@ -60,6 +67,7 @@ module prim_ram_1r1w #(
                waddr_i);
       end
     end
+`endif
 `endif
   end
 
