@@ -2,7 +2,7 @@
 """Publishes synthesis results: docs/synth.json, the synthesis table of
 docs/synthesis.md and the synth-columns blocks of README.md and docs/**/*.md.
 
-Usage: publish.py [--check] [--variants FILE] [--family FAMILY] [SYNTH_JSON...]
+Usage: publish.py [--check] [--variants FILE] [--family FAMILY [--same-netlist]] [SYNTH_JSON...]
 
   SYNTH_JSON    a synth.json written by scripts/synth.sh (synth_report.py); its
                 full (place-and-route) results replace the published ones of the
@@ -20,6 +20,13 @@ Usage: publish.py [--check] [--variants FILE] [--family FAMILY] [SYNTH_JSON...]
                 the same generated Verilog, source_sha256); exit 2 otherwise.
                 The family's part keeps the date, git revision and command of
                 the run it comes from.
+  --same-netlist  with --family: a published record measured on other RTL is
+                taken as measured on today's when the RTL changed only where
+                synthesis does not read it, as SYNTH_JSON's record shows: its
+                Yosys generic netlist (step 1: cells by type, the same Yosys)
+                is the published one. The record then takes today's rtl_sha256
+                and keeps the old one with the evidence (rtl_sha256_before);
+                a netlist that differs is exit 2, as without the option
   --variants F  the build's generated/variants.txt: every variant it lists must
                 be published, and no other (checked with --check); the blocks of
                 generated/blocks.txt beside it (hwinterp_synth_block in
@@ -70,11 +77,11 @@ DEFAULT_TARGET_MHZ = 100.0
 # second, not a clock (None: no target).
 ECP5_TARGET_MHZ = {"log_stepper": None}
 DEFAULT_ECP5_TARGET_MHZ = 150.0
-# Gowin: the Tang Nano 20K runs a design at its system clock, which litex-boards' target
-# for the board sets to 48 MHz (from the 27 MHz oscillator through the rPLL), every core
-# included; 60 MHz = 48 MHz with 25 % to spare for nextpnr-himbaechel-gowin's timing
-# model, whose author found it about 20 % more optimistic than Gowin's own tools
-# (YosysHQ/nextpnr#1345). The same for every core: the board's clock is one.
+# Gowin: this project's Tang Nano 20K target (boards/hwinterp_litex/targets/tang_nano_20k.py)
+# runs the SoC at the board's 27 MHz oscillator, litex-boards' own target for the board at
+# 48 MHz through the rPLL; 60 MHz = 48 MHz with 25 % to spare for nextpnr-himbaechel-gowin's
+# timing model, whose author found its Fmax about 20 % higher than the vendor tools'
+# (YosysHQ/nextpnr#1345). The same for every core: the board has one clock.
 GOWIN_TARGET_MHZ = {}
 DEFAULT_GOWIN_TARGET_MHZ = 60.0
 # The families whose figures are one part of a record ("ecp5", "gowin"), mergeable apart.
@@ -350,8 +357,34 @@ def replace_record(old, new, warnings):
     return new
 
 
-def merge_family(old, new, fam, path):
-    """old with new's figures of family `fam` (publish.py --family)."""
+def same_netlist(old, new):
+    """Whether two records' Yosys generic netlists have the same cells by type, by the same
+    Yosys (a record's step 1)."""
+    og, ng = old.get("generic") or {}, new.get("generic") or {}
+    return bool(og.get("cells_by_type")) and og.get("cells_by_type") == ng.get("cells_by_type") \
+        and old.get("tools", {}).get("yosys_generic") == new.get("tools", {}).get("yosys_generic")
+
+
+def rehash(old, new):
+    """old, taken as measured on new's RTL (publish.py --same-netlist): new's rtl_sha256, the
+    old one kept with what showed the netlist the same."""
+    r = dict(old)
+    before = old.get("rtl_sha256")
+    r["rtl_sha256"] = new["rtl_sha256"]
+    for fam in PART_FAMILIES:
+        if fam in r and r[fam].get("rtl_sha256") == before:
+            r[fam] = dict(r[fam], rtl_sha256=new["rtl_sha256"])
+    r["rtl_sha256_before"] = {
+        "rtl_sha256": before, "git": new.get("git", ""), "date": new.get("date", ""),
+        "why": "the RTL changed only where synthesis does not read it: the Yosys generic netlist "
+               "of today's RTL (%s, %d cells, cells by type) is the published one" % (
+                   new["tools"].get("yosys_generic", "?"), new["generic"]["cells"])}
+    return r
+
+
+def merge_family(old, new, fam, path, netlist_same=False):
+    """old with new's figures of family `fam` (publish.py --family); with netlist_same
+    (--same-netlist), old measured on other RTL whose generic netlist is new's is rehashed."""
     name = new.get("variant")
     if old is None:
         fail("%s: %s is not published; publish a full run of it first (--family merges one "
@@ -359,6 +392,9 @@ def merge_family(old, new, fam, path):
     if fam not in new:
         fail("%s: %s has no %s figures (run scripts/synth.sh --family %s)" % (path, name, fam,
                                                                              fam))
+    if not same_source(old, new) and netlist_same and "peer" not in new and \
+            new.get("rtl_sha256") and same_netlist(old, new):
+        old = rehash(old, new)
     if not same_source(old, new):
         fail("%s: %s's %s figures were measured on other RTL than the published ones (%s %s, "
              "published %s): synthesize every family again" % (
@@ -369,7 +405,7 @@ def merge_family(old, new, fam, path):
 
 
 def main(argv):
-    check, vfile, inputs, family = False, None, [], None
+    check, vfile, inputs, family, netlist_same = False, None, [], None, False
     args = list(argv[1:])
     while args:
         a = args.pop(0)
@@ -386,6 +422,8 @@ def main(argv):
             if family not in PART_FAMILIES:
                 fail("--family: '%s' is not a family whose figures merge apart (%s)" % (
                     family, ", ".join(PART_FAMILIES)))
+        elif a == "--same-netlist":
+            netlist_same = True
         elif a in ("-h", "--help"):
             sys.stderr.write(__doc__)
             return 2
@@ -397,6 +435,8 @@ def main(argv):
         fail("--check takes no SYNTH_JSON (it writes nothing)")
     if family and not inputs:
         fail("--family %s needs a SYNTH_JSON to merge" % family)
+    if netlist_same and not family:
+        fail("--same-netlist works with --family only")
 
     published, published_peers = load(PUBLISHED) if os.path.exists(PUBLISHED) else ([], [])
     by_name = {r["variant"]: r for r in published}
@@ -406,7 +446,8 @@ def main(argv):
         variants, peers = load(path)
         for r in variants:
             if family:
-                by_name[r["variant"]] = merge_family(by_name.get(r["variant"]), r, family, path)
+                by_name[r["variant"]] = merge_family(by_name.get(r["variant"]), r, family, path,
+                                                     netlist_same)
                 continue
             if "harness" not in r:
                 fail("%s: %s is a --generic-only result (no iCE40 figures); run synth.sh "

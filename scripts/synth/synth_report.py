@@ -614,21 +614,22 @@ def render_gowin_table(results):
     rs = [r for r in results if "gowin" in r]
     if not rs:
         return []
-    g0 = rs[0]["gowin"]
-    seeds = "/".join(str(p["seed"]) for p in g0["runs"])
-    md = ["| variant | Gowin core LUT4 / ALU / FF / BSRAM / DSP / LUT RAM | harness placed LUT4 sites / FF "
-          "of %s / %s | Fmax %s, seeds %s (MHz) | Fmax min-max | critical path, first seed: "
-          "from -> to |" % (g0["runs"][0].get("lut4_available", "?"),
-                            g0["runs"][0].get("ff_available", "?"), g0["family"], seeds),
+    placed = [p for r in rs for p in r["gowin"]["runs"] if "lut4_available" in p]
+    avail = " / ".join(str(placed[0].get(k + "_available", "?")) if placed else "?"
+                       for k in ("lut4", "alu", "ff"))
+    md = ["| variant | Gowin core LUT4 / ALU / FF / BSRAM / DSP / LUT RAM | harness placed LUT4 / "
+          "ALU / FF of %s | Fmax %s per seed (MHz) | Fmax min-max | critical path, first seed: "
+          "from -> to |" % (avail, rs[0]["gowin"]["family"]),
           "|---|---|---|---|---|---|"]
     for r in rs:
         g = r["gowin"]
         c, p0 = g["core"], g["runs"][0]
-        md.append("| `%s` | %d / %d / %d / %d / %d / %d | %s / %s | %s | %s | %s |" % (
+        md.append("| `%s` | %d / %d / %d / %d / %d / %d | %s | %s | %s | %s |" % (
             r["variant"], c["lut4"], c["alu"], c["ff"], c["bram"], c["dsp"], c["lutram"],
-            p0.get("lut4_used", "?"), p0.get("ff_used", "?"), seeds_text(g["runs"]),
+            " / ".join(str(p0[k + "_used"]) for k in ("lut4", "alu", "ff"))
+            if "lut4_used" in p0 else "-", seeds_text(g["runs"]),
             "%.2f-%.2f" % (g["fmax_min_mhz"], g["fmax_max_mhz"])
-            if g["fmax_min_mhz"] is not None else "?",
+            if g["fmax_min_mhz"] is not None else "-",
             p0.get("no_fit") or ecp5_path_text(p0.get("critical_path"))))
     return md
 
@@ -901,7 +902,8 @@ def markdown(results, peers=()):
                      "multiplier primitives; LUT RAM = RAM16SDP4 cells) and of the "
                      "same pin harness, placed by nextpnr-himbaechel-gowin --device "
                      "GW2AR-LV18QN88C8/I7 --vopt family=GW2A-18C (the Tang Nano 20K's part) per "
-                     "seed, the harness's pins from %s; placed LUT4 sites = LUT4 + ALU. Critical "
+                     "seed, the harness's pins from %s; harness placed: nextpnr's report of the "
+                     "routed first seed. Critical "
                      "path ends named as on ECP5; mux = MUX2_LUT5-8 steps of a wide function, "
                      "carry = ALU carry-outs." % rs_cst(results))
     if peer_md:
