@@ -384,7 +384,8 @@ def rehash(old, new):
 
 def merge_family(old, new, fam, path, netlist_same=False):
     """old with new's figures of family `fam` (publish.py --family); with netlist_same
-    (--same-netlist), old measured on other RTL whose generic netlist is new's is rehashed."""
+    (--same-netlist), old measured on other RTL whose generic netlist is that of new, measured
+    on today's RTL, is rehashed."""
     name = new.get("variant")
     if old is None:
         fail("%s: %s is not published; publish a full run of it first (--family merges one "
@@ -393,7 +394,8 @@ def merge_family(old, new, fam, path, netlist_same=False):
         fail("%s: %s has no %s figures (run scripts/synth.sh --family %s)" % (path, name, fam,
                                                                              fam))
     if not same_source(old, new) and netlist_same and "peer" not in new and \
-            new.get("rtl_sha256") and same_netlist(old, new):
+            new.get("rtl_sha256") == rtl_digest(new.get("filelist", new["core"])) and \
+            same_netlist(old, new):  # only towards today's RTL
         old = rehash(old, new)
     if not same_source(old, new):
         fail("%s: %s's %s figures were measured on other RTL than the published ones (%s %s, "
