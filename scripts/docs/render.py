@@ -485,7 +485,7 @@ def r_link_size(_):
 
 def synth_missed_paths(family):
     """The critical path at every seed of each variant that misses its target on a family
-    ("hx8k" or "ecp5"; docs/synth.json, as scripts/synth/publish.py writes it)."""
+    ("hx8k", "ecp5" or "gowin"; docs/synth.json, as scripts/synth/publish.py writes it)."""
     sys.path.insert(0, os.path.join(ROOT, "scripts", "synth"))
     import publish  # noqa: E402  (its path texts and targets)
     import synth_report  # noqa: E402  (the ECP5 path text: registers with their RTL lines)
@@ -494,7 +494,8 @@ def synth_missed_paths(family):
     if family == "hx8k":
         target, runs_of, path = publish.target, lambda r: r["harness"]["hx8k"], publish.path_text
     else:
-        target, runs_of = publish.ecp5_target, lambda r: r.get("ecp5", {}).get("runs", [])
+        target = publish.ecp5_target if family == "ecp5" else publish.gowin_target
+        runs_of = lambda r: r.get(family, {}).get("runs", [])  # noqa: E731
         path = synth_report.ecp5_path_text
     rows = []
     for r in results:
@@ -503,7 +504,8 @@ def synth_missed_paths(family):
             continue
         rows += [["`%s`" % r["variant"], p["seed"], publish.seed_text(p),
                   path(p.get("critical_path"))] for p in runs]
-    return table(["variant", "seed", "%s Fmax (MHz)" % family.upper(),
+    name = {"gowin": "Gowin"}.get(family, family.upper())
+    return table(["variant", "seed", "%s Fmax (MHz)" % name,
                   "critical path: from -> to"], rows)
 
 
@@ -513,6 +515,10 @@ def r_synth_paths(_):
 
 def r_synth_paths_ecp5(_):
     return synth_missed_paths("ecp5")
+
+
+def r_synth_paths_gowin(_):
+    return synth_missed_paths("gowin")
 
 
 def r_folder_graph(_):
@@ -596,6 +602,7 @@ RENDERERS = {
     "folder-graph": ("tb", r_folder_graph),
     "synth-paths": ("docs/synth.json", r_synth_paths),
     "synth-paths-ecp5": ("docs/synth.json", r_synth_paths_ecp5),
+    "synth-paths-gowin": ("docs/synth.json", r_synth_paths_gowin),
     "variants": ("cmake/cores.cmake", r_variants),
     "papers": ("docs/data/papers.json", r_papers),
     "reproduced": ("docs/data/reproduce.json", r_reproduced),

@@ -5,8 +5,8 @@
 
 BEFORE and AFTER: a synth.json file, or REV:PATH for the file as git holds
 it at revision REV (e.g. f637dc3:docs/synth.json). Prints a markdown table:
-per variant the iCE40 core LUT4 / carry / FF, the HX8K Fmax per seed and the
-ECP5 Fmax per seed, before -> after ("-" where a record has none), then the
+per variant the iCE40 core LUT4 / carry / FF, the HX8K Fmax per seed, the
+ECP5 and the Gowin Fmax per seed, before -> after ("-" where a record has none), then the
 per-axis rows publish.py derives, before -> after. Variants in AFTER's order
 (or the variants file's); a variant only in BEFORE is listed as removed.
 Exit 2 on a file or revision that cannot be read.
@@ -43,7 +43,7 @@ def area(r):
 
 def fmax(r, family):
     runs = (r.get("harness", {}).get("hx8k") if family == "hx8k"
-            else r.get("ecp5", {}).get("runs"))
+            else r.get(family, {}).get("runs"))
     return " / ".join(publish.seed_text(p) for p in runs) if runs else "-"
 
 
@@ -69,16 +69,16 @@ def main():
         names = [v for v in order if v in names] + [v for v in names if v not in order]
     by_new = {r["variant"]: r for r in new}
     print("| variant | iCE40 core LUT4 / carry / FF | HX8K Fmax per seed (MHz) |"
-          " ECP5 Fmax per seed (MHz) |")
-    print("|---|---|---|---|")
+          " ECP5 Fmax per seed (MHz) | Gowin Fmax per seed (MHz) |")
+    print("|---|---|---|---|---|")
     for v in names + [v for v in by_old if v not in by_new]:
         b, n = by_old.get(v, {}), by_new.get(v)
         if n is None:
-            print("| `%s` | removed | | |" % v)
+            print("| `%s` | removed | | | |" % v)
             continue
-        print("| `%s` | %s -> %s | %s -> %s | %s -> %s |" % (
+        print("| `%s` | %s -> %s | %s -> %s | %s -> %s | %s -> %s |" % (
             v, area(b), area(n), fmax(b, "hx8k"), fmax(n, "hx8k"), fmax(b, "ecp5"),
-            fmax(n, "ecp5")))
+            fmax(n, "ecp5"), fmax(b, "gowin"), fmax(n, "gowin")))
     pb, pn = per_axis(old), per_axis(new)
     if pn:
         print("\n| core | iCE40 LUT4 / carry / FF per axis |")

@@ -38,16 +38,44 @@ JSON keys per record (besides the iCE40 ones: ice40_core, harness, up5k):
                           logic_ns, routing_ns}; or {seed, timeout_s}; or
                           {seed, no_fit: "does not fit: ..."} (the only run)
     fmax_min_mhz, fmax_max_mhz
+    date, git, command, times_s, rtl_sha256 (source_sha256 for a peer)
+                          the run these figures come from (publish.py --family
+                          ecp5 merges them into a record another run measured)
+  gowin                   the Gowin flow (synth.sh --family gowin):
+    device, family        (GW2AR-LV18QN88C8/I7, GW2A-18C: the nextpnr device and
+                          chip database), board, cst (the harness's pin file),
+                          tools {yosys, nextpnr}
+    core                  synth_gowin -family gw2a -noiopads of the bare core:
+                          lut4 (LUT1-LUT4 cells), alu (ALU cells, one bit and one
+                          LUT4 site each), ff (DFF*), bram (BSRAM modes: SP, SDPB,
+                          DPB, ...), dsp (MULT9X9, MULT18X18, ... cells), lutram
+                          (RAM16S*/RAM16SDP*), widemux (MUX2_LUT5-8), lut4_total
+                          (lut4 + alu), cells_by_type
+    harness               {netlist, overhead} as for ECP5
+    runs                  per seed: seed, fmax_mhz, target_mhz, met, clock,
+                          lut4_used/_available (LUT4 sites: logic and ALU),
+                          alu_used, ff_used, io_used, bram_used, lutram_used,
+                          bufg_used (each with _available), dsp_used (the DSP
+                          primitives summed; dsp_by_type), critical_path (as
+                          ECP5's; carry_steps: ALU carry-outs, mux_levels:
+                          MUX2_LUT5-8, lut_levels: LUT and ALU sum outputs);
+                          or {seed, timeout_s}; or {seed, no_fit}
+    fmax_min_mhz, fmax_max_mhz
+    date, git, command, times_s, rtl_sha256 (source_sha256 for a peer)
+                          the run these figures come from (publish.py --family
+                          gowin merges them into a record another run measured)
+  command                 the synth.sh command line of the run (from runs that
+                          record it)
   peer                    (peers only) how the peer was elaborated: package and
                           versions, module, configuration, what was replaced,
                           its ports (scripts/synth/peers/*.py --info)
   source_sha256           (peers only) SHA-256 of the generated Verilog (peers
                           have no rtl_sha256)
 
-For scripts/synth/publish.py: render_ecp5_table(records) and
+For scripts/synth/publish.py: render_ecp5_table(records), render_gowin_table(records) and
 render_peer_rows(variants, peers) return the ECP5 table and the peers' table with
-the rows "ours / peer" as lists of markdown lines (empty without ECP5 results or
-peers).
+the rows "ours / peer" as lists of markdown lines (empty without ECP5 or Gowin
+results or peers).
 """
 import hashlib
 import json
@@ -124,9 +152,37 @@ def ecp5(by_type):
     return r
 
 
+# Gowin (synth_gowin): the cells by role. BSRAM: the 18-kbit block RAM in each
+# of its modes; DSP: every multiplier, pre-adder and accumulator primitive of
+# the GW1N/GW2A DSP block; LUT RAM: the shadow-SRAM modes of a CLU.
+GOWIN_BSRAM = ("SP", "SPX9", "SDP", "SDPB", "SDPX9", "SDPX9B", "DP", "DPB", "DPX9", "DPX9B",
+               "ROM", "ROMX9", "pROM", "pROMX9")
+GOWIN_DSP = ("MULT9X9", "MULT18X18", "MULT36X36", "MULTALU18X18", "MULTALU36X18",
+             "MULTADDALU18X18", "ALU54D", "PADD9", "PADD18")
+GOWIN_LUTRAM = ("RAM16S1", "RAM16S2", "RAM16S4", "RAM16SDP1", "RAM16SDP2", "RAM16SDP4")
+
+
+def gowin(by_type):
+    """LUT4 / ALU / FF / BSRAM / DSP of a synth_gowin netlist."""
+    n = by_type.get
+    r = {
+        "lut4": sum(n("LUT%d" % k, 0) for k in range(1, 5)),  # LUT1-LUT4: one LUT4 site each
+        "alu": n("ALU", 0),  # one bit, one LUT4 site of a CLU in ALU mode, each
+        "ff": sum(c for t, c in by_type.items() if t.startswith("DFF")),
+        "bram": sum(n(t, 0) for t in GOWIN_BSRAM),
+        "dsp": sum(n(t, 0) for t in GOWIN_DSP),
+        "lutram": sum(n(t, 0) for t in GOWIN_LUTRAM),
+        "widemux": sum(n("MUX2_LUT%d" % k, 0) for k in range(5, 9)),
+    }
+    r["lut4_total"] = r["lut4"] + r["alu"]
+    return r
+
+
 # The cell types Yosys' autoname appends to a name it derives from a neighbour.
 AUTONAME_CUT = re.compile(r"_(?:LUT4|TRELLIS_FF|TRELLIS_COMB|CCU2C|PFUMX|L6MUX21|DP16KD|MULT18X18D|"
                           r"ALU54B|TRELLIS_DPR16X4)_.*$")
+GOWIN_AUTONAME_CUT = re.compile(r"_(?:LUT[1-4]|DFF[A-Z]*|ALU|MUX2_LUT[5-8]|IBUF|OBUF|RAM16S\w*|"
+                                r"SDPB|DPB|SDPX9B|DPX9B|pROM|MULT\w*|ALU54D|PADD\w*)_.*$")
 ECP5_PRE = {
     "lut4_total": re.compile(r"Total LUT4s:\s*(\d+)/"),
     "lut4_logic": re.compile(r"logic LUTs:\s*(\d+)/"),
@@ -169,13 +225,15 @@ def fmax(log):
 def clock_path(rep, lut, carry, mux=None):
     """The register-to-register critical path of a nextpnr report: its segments, the levels
     of logic by the output port they end on (lut, carry, mux), the logic and routing ns."""
+    luts = lut if isinstance(lut, tuple) else (lut,)
     for cp in rep.get("critical_paths", []):
         if cp.get("from") != cp.get("to"):
             continue
         segs = cp.get("path", [])
         routing = [s for s in segs if s.get("type") == "routing"]
         ports = [s["to"]["port"] for s in segs if s.get("type") == "logic"]
-        counts = {"lut_levels": ports.count(lut), "carry_steps": ports.count(carry)}
+        counts = {"lut_levels": sum(ports.count(p) for p in luts),
+                  "carry_steps": ports.count(carry)}
         if mux:
             counts["mux_levels"] = ports.count(mux)
         counts["logic_ns"] = round(sum(s["delay"] for s in segs if s.get("type") != "routing"), 2)
@@ -187,13 +245,15 @@ def clock_path(rep, lut, carry, mux=None):
 def pnr(log_path, report_path, family="ice40", netlist=None):
     """Fmax, packed LUT/FF and utilisation of one nextpnr run.
 
-    family: "ice40" or "ecp5"; netlist (ECP5): the cells of the placed Yosys JSON,
-    for the RTL lines of the critical path's flip-flops."""
+    family: "ice40", "ecp5" or "gowin"; netlist (ECP5, Gowin): the cells of the placed
+    Yosys JSON, for the RTL lines of the critical path's flip-flops."""
     with open(log_path) as f:
         log = f.read()
     r = {}
     if family == "ecp5":
         return pnr_ecp5(log, report_path, netlist or {})
+    if family == "gowin":
+        return pnr_gowin(log, report_path, netlist or {})
     r.update(fmax(log))
     pk = {k: int(m.group(1)) for k, rx in PACK.items() for m in [rx.search(log)] if m}
     if {"lut_only", "lut_dff", "dff_only"} <= pk.keys():
@@ -242,15 +302,54 @@ def pnr_ecp5(log, report_path, netlist):
             u = rep.get("utilization", {}).get(key)
             if u:
                 r[name + "_used"], r[name + "_available"] = u["used"], u["available"]
-        path = clock_path(rep, "F", "FCO", "OFX")
+        path = named_path(rep, netlist, AUTONAME_CUT, "F", "FCO", "OFX")
         if path:
-            segs, from_net, counts = path
-            src = segs[0]["from"]["cell"] if segs else ""
-            dst = segs[-1]["to"]["cell"] if segs else ""
-            (from_src, from_reg), (to_src, to_reg) = reg_at(netlist.get(src)), reg_at(netlist.get(dst))
-            r["critical_path"] = dict(from_reg=from_reg, from_src=from_src, to_reg=to_reg,
-                                      to_src=to_src, from_net=AUTONAME_CUT.sub("", from_net),
-                                      to_cell=AUTONAME_CUT.sub("", dst), **counts)
+            r["critical_path"] = path
+    return r
+
+
+def named_path(rep, netlist, cut, lut, carry, mux):
+    """The critical path of a nextpnr report with its end registers named from the netlist
+    (reg_at) and Yosys' automatic names cut by `cut`; None without a clock path."""
+    path = clock_path(rep, lut, carry, mux)
+    if not path:
+        return None
+    segs, from_net, counts = path
+    src = segs[0]["from"]["cell"] if segs else ""
+    dst = segs[-1]["to"]["cell"] if segs else ""
+    (from_src, from_reg), (to_src, to_reg) = reg_at(netlist.get(src)), reg_at(netlist.get(dst))
+    return dict(from_reg=from_reg, from_src=from_src, to_reg=to_reg, to_src=to_src,
+                from_net=cut.sub("", from_net), to_cell=cut.sub("", dst), **counts)
+
+
+GOWIN_UTIL = {"LUT4": "lut4", "ALU": "alu", "DFF": "ff", "IOB": "io", "BSRAM": "bram",
+              "RAM16SDP4": "lutram", "BUFG": "bufg"}
+
+
+def pnr_gowin(log, report_path, netlist):
+    """Fmax, utilisation (LUT4 sites: logic and ALU; the DSP primitives summed) and the
+    critical path of one nextpnr-himbaechel-gowin run."""
+    r = fmax(log)
+    util = re.search(r"Device utilisation:\n((?:Info:.*\n)+)", log)
+    used = {name: (int(u), int(a)) for name, u, a in
+            re.findall(r"(\w+):\s*(\d+)/\s*(\d+)", util.group(1) if util else "")}
+    if os.path.exists(report_path):
+        with open(report_path) as f:
+            rep = json.load(f)
+        used.update({k: (u["used"], u["available"]) for k, u in rep.get("utilization", {}).items()})
+    else:
+        rep = {}
+    for key, name in GOWIN_UTIL.items():
+        if key in used:
+            r[name + "_used"], r[name + "_available"] = used[key]
+    dsp = {k: used[k][0] for k in GOWIN_DSP if k in used and used[k][0]}
+    if any(k in used for k in GOWIN_DSP):
+        r["dsp_used"] = sum(dsp.values())
+    if dsp:
+        r["dsp_by_type"] = dsp
+    path = named_path(rep, netlist, GOWIN_AUTONAME_CUT, ("F", "SUM"), "COUT", "O")
+    if path:
+        r["critical_path"] = path
     return r
 
 
@@ -316,7 +415,7 @@ def seed_runs(vdir, info, family, netlist=None):
             break
         r = pnr(os.path.join(vdir, "pnr_%s_seed%s.log" % (family, s)),
                 os.path.join(vdir, "pnr_%s_seed%s.json" % (family, s)),
-                "ecp5" if family == "ecp5" else "ice40", netlist)
+                family if family in ("ecp5", "gowin") else "ice40", netlist)
         r["seed"] = int(s)
         runs.append(r)
     return runs
@@ -325,6 +424,18 @@ def seed_runs(vdir, info, family, netlist=None):
 def fmax_range(runs):
     fmaxes = [r["fmax_mhz"] for r in runs if "fmax_mhz" in r]
     return (min(fmaxes) if fmaxes else None), (max(fmaxes) if fmaxes else None)
+
+
+def provenance(res, info, family):
+    """Where a family's figures come from (date, git, command, its steps' times, the RTL's
+    or peer source's digest): kept with them when publish.py --family merges them into a
+    record another run measured."""
+    p = {"date": res["date"], "git": res["git"], "command": info.get("command", ""),
+         "times_s": {k: v for k, v in res["times_s"].items() if family in k}}
+    for key in ("rtl_sha256", "source_sha256"):
+        if key in res:
+            p[key] = res[key]
+    return p
 
 
 def variant_result(out, variant):
@@ -344,6 +455,8 @@ def variant_result(out, variant):
         "date": info.get("date", ""),
         "git": info.get("git", ""),
     }
+    if "command" in info:
+        res["command"] = info["command"]
     if "peer" in info:
         with open(info["peer"]) as f:
             res["peer"] = json.load(f)
@@ -403,6 +516,28 @@ def variant_result(out, variant):
             "fmax_min_mhz": lo,
             "fmax_max_mhz": hi,
         }
+        res["ecp5"].update(provenance(res, info, "ecp5"))
+    if "gowin" in families:
+        by_type = cells(os.path.join(vdir, "gowin_core_stat.json"))
+        core = gowin(by_type)
+        hnet = gowin(cells(os.path.join(vdir, "harness_gowin_stat.json")))
+        with open(os.path.join(vdir, "harness_gowin.json")) as f:
+            mods = json.load(f)["modules"]
+        top = mods.get("%s_harness" % info["core"], {})
+        runs = seed_runs(vdir, info, "gowin", top.get("cells", {}))
+        del mods, top
+        lo, hi = fmax_range(runs)
+        res["gowin"] = {
+            "device": "GW2AR-LV18QN88C8/I7", "family": "GW2A-18C", "board": "Sipeed Tang Nano 20K",
+            "tools": {"yosys": info.get("gowin_yosys", ""), "nextpnr": info.get("gowin_nextpnr", "")},
+            "cst": info.get("gowin_cst", ""),
+            "core": dict(core, cells_by_type=by_type),
+            "harness": {"netlist": hnet, "overhead": {k: hnet[k] - core[k] for k in core}},
+            "runs": runs,
+            "fmax_min_mhz": lo,
+            "fmax_max_mhz": hi,
+        }
+        res["gowin"].update(provenance(res, info, "gowin"))
     chk = os.path.join(vdir, "netlist_check.log")
     if info.get("check") == "1" and os.path.exists(chk):
         with open(chk) as f:
@@ -473,6 +608,32 @@ def render_ecp5_table(results):
     return md
 
 
+def render_gowin_table(results):
+    """Markdown: the Gowin table (one row per record with Gowin results), for synth.md and
+    for scripts/synth/publish.py to call. Returns [] when no record has Gowin results."""
+    rs = [r for r in results if "gowin" in r]
+    if not rs:
+        return []
+    placed = [p for r in rs for p in r["gowin"]["runs"] if "lut4_available" in p]
+    avail = " / ".join(str(placed[0].get(k + "_available", "?")) if placed else "?"
+                       for k in ("lut4", "alu", "ff"))
+    md = ["| variant | Gowin core LUT4 / ALU / FF / BSRAM / DSP / LUT RAM | harness placed LUT4 / "
+          "ALU / FF of %s | Fmax %s per seed (MHz) | Fmax min-max | critical path, first seed: "
+          "from -> to |" % (avail, rs[0]["gowin"]["family"]),
+          "|---|---|---|---|---|---|"]
+    for r in rs:
+        g = r["gowin"]
+        c, p0 = g["core"], g["runs"][0]
+        md.append("| `%s` | %d / %d / %d / %d / %d / %d | %s | %s | %s | %s |" % (
+            r["variant"], c["lut4"], c["alu"], c["ff"], c["bram"], c["dsp"], c["lutram"],
+            " / ".join(str(p0[k + "_used"]) for k in ("lut4", "alu", "ff"))
+            if "lut4_used" in p0 else "-", seeds_text(g["runs"]),
+            "%.2f-%.2f" % (g["fmax_min_mhz"], g["fmax_max_mhz"])
+            if g["fmax_min_mhz"] is not None else "-",
+            p0.get("no_fit") or ecp5_path_text(p0.get("critical_path"))))
+    return md
+
+
 def axes_of(r):
     if "peer" in r:
         return int(r["peer"]["axes"])
@@ -483,13 +644,16 @@ def family_counts(r, family):
     """LUT4 / carry / FF of the bare core in a family (carry: SB_CARRY or CCU2C cells)."""
     if family == "ice40":
         return r.get("ice40_core")
+    if family == "gowin":
+        c = (r.get("gowin") or {}).get("core")
+        return dict(c, carry=c["alu"]) if c else None  # carry: ALU cells, one bit each
     return (r.get("ecp5") or {}).get("core")
 
 
 def family_fmin(r, family):
     if family == "ice40":
         return (r.get("harness") or {}).get("fmax_min_mhz")
-    return (r.get("ecp5") or {}).get("fmax_min_mhz")
+    return (r.get(family) or {}).get("fmax_min_mhz")
 
 
 def design_key(r):
@@ -542,8 +706,8 @@ def render_peer_rows(results, peers):
     scripts/synth/publish.py to call. Returns [] without peers."""
     if not peers:
         return []
-    fams = [f for f in ("ice40", "ecp5") if any(family_counts(p, f) for p in peers)]
-    names = {"ice40": "iCE40 (HX8K)", "ecp5": "ECP5 (LFE5U-25F-6)"}
+    fams = [f for f in ("ice40", "ecp5", "gowin") if any(family_counts(p, f) for p in peers)]
+    names = {"ice40": "iCE40 (HX8K)", "ecp5": "ECP5 (LFE5U-25F-6)", "gowin": "Gowin (GW2AR-18C)"}
     md = ["| peer | axes | family | core LUT4 / carry / FF / DSP / BRAM | Fmax per seed (MHz) "
           "| critical path, first seed |", "|---|---|---|---|---|---|"]
     for p in peers:
@@ -558,14 +722,15 @@ def render_peer_rows(results, peers):
                     short_name(cpt["from_net"]), short_name(cpt["to_cell"]), cpt["lut_levels"],
                     cpt["carry_steps"], cpt["logic_ns"], cpt["routing_ns"]) if cpt else "-"
             else:
-                runs = p["ecp5"]["runs"]
-                path = ecp5_path_text(runs[0].get("critical_path"))
+                runs = p[f]["runs"]
+                path = runs[0].get("no_fit") or ecp5_path_text(runs[0].get("critical_path"))
             md.append("| `%s` | %d | %s | %d / %d / %d / %d / %d | %s | %s |" % (
                 p["variant"], axes_of(p), names[f], c["lut4"], c["carry"], c["ff"],
                 c.get("dsp", 0), c.get("bram", 0), seeds_text(runs), path))
     ppair = axis_pairs(peers)
     ours_pairs = axis_pairs(results)
-    md += ["", "Ours / peer (carry: SB_CARRY cells on iCE40, CCU2C cells of two bits on ECP5; "
+    md += ["", "Ours / peer (carry: SB_CARRY cells on iCE40, CCU2C cells of two bits on ECP5, "
+           "ALU cells of one bit on Gowin; "
            "per axis = (bigger - smaller variant) / (difference in axes), as for the per-axis "
            "rows; Fmax: the lowest of the seeds):", "",
            "| ours | peer | family | what | ours LUT4 / carry / FF | peer LUT4 / carry / FF | "
@@ -606,6 +771,10 @@ def render_peer_rows(results, peers):
         md[-4:] = ["No ratio: this run has no two variants of a core that differ only in AXES, and "
                    "none with as many axes as the bigger peer."]
     return md
+
+
+def rs_cst(results):
+    return ", ".join(sorted({r["gowin"].get("cst", "?") for r in results if "gowin" in r}))
 
 
 def markdown(results, peers=()):
@@ -682,6 +851,9 @@ def markdown(results, peers=()):
     ecp5_md = render_ecp5_table(results)
     if ecp5_md:
         md += ["", "## ECP5", ""] + ecp5_md
+    gowin_md = render_gowin_table(results)
+    if gowin_md:
+        md += ["", "## Gowin", ""] + gowin_md
     peer_md = render_peer_rows(ours, peers)
     if peer_md:
         md += ["", "## Peers", ""] + peer_md
@@ -694,7 +866,9 @@ def markdown(results, peers=()):
             ("; iCE40: %s, %s" % (tool_text(t["yosys"]), tool_text(t["nextpnr"]))
              if "ice40_core" in r else "") + \
             ("; ECP5: %s, %s" % (tool_text(r["ecp5"]["tools"]["yosys"]),
-                                 tool_text(r["ecp5"]["tools"]["nextpnr"])) if "ecp5" in r else "")
+                                 tool_text(r["ecp5"]["tools"]["nextpnr"])) if "ecp5" in r else "") + \
+            ("; Gowin: %s, %s" % (tool_text(r["gowin"]["tools"]["yosys"]),
+                                  tool_text(r["gowin"]["tools"]["nextpnr"])) if "gowin" in r else "")
         sets.setdefault(key, []).append(r["variant"])
     for key, vs in sets.items():
         notes.append("- Tools: %s (%s)." % (key, "every row" if len(sets) == 1 else ", ".join(vs)))
@@ -721,6 +895,17 @@ def markdown(results, peers=()):
                      "of the first and last flip-flop and the line that declares it (synth.sh "
                      "copies it onto the flip-flop before abc9, which keeps no register names); "
                      "mux = PFUMX/L6MUX21 steps of a wide function.")
+    if gowin_md:
+        notes.append("- Gowin: YoWASP Yosys `synth_gowin -family gw2a` of the bare core "
+                     "(-noiopads; core columns: LUT4 = LUT1-LUT4 cells, ALU = one-bit carry "
+                     "cells, each also a LUT4 site; BSRAM = 18-kbit block RAMs; DSP = the "
+                     "multiplier primitives; LUT RAM = RAM16SDP4 cells) and of the "
+                     "same pin harness, placed by nextpnr-himbaechel-gowin --device "
+                     "GW2AR-LV18QN88C8/I7 --vopt family=GW2A-18C (the Tang Nano 20K's part) per "
+                     "seed, the harness's pins from %s; harness placed: nextpnr's report of the "
+                     "routed first seed. Critical "
+                     "path ends named as on ECP5; mux = MUX2_LUT5-8 steps of a wide function, "
+                     "carry = ALU carry-outs." % rs_cst(results))
     if peer_md:
         notes.append("- Peers: elaborated from the pinned PyPI packages by their own generator "
                      "(%s), synthesized and placed by the same steps; never part of hwinterp. "
