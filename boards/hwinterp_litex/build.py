@@ -301,8 +301,9 @@ def place_seed(g: Gateware, seed: int, out: str, cells: dict) -> dict:
     with open(os.path.join(d, "report.json")) as f:
         report = json.load(f)
     net, mhz = sys_fmax(report, g.sys_hz)
-    result.update(clock=net, fmax_mhz=round(mhz, 2),
-                  utilization=utilization(report.get("utilization", {}), g.family, cells))
+    used = report.get("utilization", {})
+    result.update(clock=net, fmax_mhz=round(mhz, 2), utilization=utilization(used, g.family, cells),
+                  placed={k: v["used"] for k, v in used.items() if v["used"]})
     bit = os.path.join(d, f"{g.name}.{BITSTREAM[g.family]}")
     plog = os.path.join(d, "pack.log")
     if run(pack_argv(g, placed, bit), plog, g.dir) != 0:
