@@ -19,7 +19,7 @@ Usage: python -m hwinterp_litex.build --board NAME --out DIR [--seeds "1 2 3"]
            peer_litexcnc_5a_75b, LiteX-CNC's own firmware for the Colorlight
            5A-75B v8.0 (scripts/synth/peers/litexcnc_5a_75b.json: 4 stepgens,
            2 inputs, its watchdog, Etherbone, 50 MHz) through the same flow
-  --out    DIR/gateware/ (LiteX's output), DIR/seed<N>/ (nextpnr's log and
+  --out    DIR/gateware/ (LiteX's output; a peer's: DIR/<its config>/gateware/), DIR/seed<N>/ (nextpnr's log and
            report, the bitstream), DIR/<NAME>.<bit|fs|bin> (the first seed's
            bitstream), DIR/result.json (the figures)
   --seeds  nextpnr seeds, each a whole number (default "1")
@@ -136,10 +136,7 @@ def peer_gateware(name: str, out: str) -> Gateware:
     log = os.path.join(out, "litexcnc.log")
     if run([sys.executable, script, peer["config"], "--out", out], log, out) != 0:
         raise Failed(f"{name}: LiteX-CNC's build_firmware failed; see {log}")
-    gw = os.path.join(out, "gateware")
-    if os.path.exists(gw):
-        shutil.rmtree(gw)
-    os.rename(os.path.join(out, stem, "gateware"), gw)
+    gw = os.path.join(out, stem, "gateware")  # its Yosys script reads the Verilog from there
     like = target(peer["like"])
     # LiteX-CNC names its build after the platform: colorlight_5a_75b.
     top = os.path.splitext([f for f in os.listdir(gw) if f.endswith(".ys")][0])[0]
