@@ -11,7 +11,8 @@
 #               stepgens, through the same ECP5 flow)
 #   --seeds S   nextpnr seeds (default '1')
 #   --out DIR   default build/boards/BOARD: gateware/ (LiteX's Verilog and
-#               constraints, synth.log), seed<N>/ (nextpnr.log, report.json,
+#               constraints, synth.log; the peer's in litexcnc_5a_75b/gateware/),
+#               seed<N>/ (nextpnr.log, report.json,
 #               the bitstream), BOARD's bitstream of the first seed
 #               (.bit ECP5, .fs Gowin, .bin iCE40), result.json
 #   --json FILE merge the figures into FILE (docs/data/boards.json, which
