@@ -4,7 +4,7 @@
 # boards/hwinterp_litex/build.py: the gateware from LiteX (the target's
 # pins and clocks), synthesis, place and route at each seed, the packer.
 #
-# Usage: scripts/board.sh BOARD [--seeds '1 2 3'] [--out DIR] [--json FILE]
+# Usage: scripts/board.sh BOARD [--seeds '1 2 3'] [--out DIR] [--json FILE] [--reuse]
 #   BOARD       colorlight_5a_75b, tang_nano_20k, ice40_hx8k_breakout
 #               (hwinterp_board in cmake/cores.cmake), or
 #               peer_litexcnc_5a_75b (LiteX-CNC's own 5A-75B firmware, 4
@@ -17,7 +17,10 @@
 #               (.bit ECP5, .fs Gowin, .bin iCE40), result.json
 #   --json FILE merge the figures into FILE (docs/data/boards.json, which
 #               docs/synthesis.md's Boards section renders:
-#               scripts/docs/render.py)
+#               scripts/docs/render.py), after every seed
+#   --reuse     keep the netlist and the seeds already in DIR/result.json
+#               when the gateware (LiteX's output, the RTL, the constraints)
+#               is the same: a stopped run goes on where it stopped
 # Every seed must reach 1.15 x the board's system clock (57.5 MHz for the
 # Colorlight's 50, 31.05 for the Tang Nano's 27, 13.8 for the HX8K's 12).
 # Exit status: 0 built, every seed fast enough; 1 a seed does not fit or is
@@ -35,11 +38,13 @@ shift
 seeds=1
 out=""
 json=""
+reuse=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --seeds) [ $# -ge 2 ] || { echo "board: --seeds needs a list" >&2; exit 2; }; seeds=$2; shift 2 ;;
     --out) [ $# -ge 2 ] || { echo "board: --out needs a directory" >&2; exit 2; }; out=$2; shift 2 ;;
     --json) [ $# -ge 2 ] || { echo "board: --json needs a file" >&2; exit 2; }; json=$2; shift 2 ;;
+    --reuse) reuse=(--reuse); shift ;;
     *) echo "board: unknown argument '$1'" >&2; exit 2 ;;
   esac
 done
@@ -51,4 +56,4 @@ export PYTHONPATH="$root/boards${PYTHONPATH:+:$PYTHONPATH}"
 out=${out:-${HWINTERP_BUILD_DIR:-$root/build}/boards/$board}
 cmd="scripts/board.sh $board --seeds '$seeds'"
 exec "$venv/bin/python3" -m hwinterp_litex.build --board "$board" --seeds "$seeds" --out "$out" \
-  ${json:+--json "$json"} --command "$cmd"
+  ${json:+--json "$json"} --command "$cmd" "${reuse[@]}"

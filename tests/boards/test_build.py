@@ -100,3 +100,21 @@ def test_packer_flags_are_litex_s_without_its_files(tmp_path):
         "gowin_pack -d GW2A-18C -o t.fs t_routed.json --mspi_as_gpio --done_as_gpio\n")
     g.family = "gowin"
     assert build.litex_packer_flags(g) == ["--mspi_as_gpio", "--done_as_gpio"]
+
+
+def test_gateware_digest_ignores_litex_s_date_and_follows_the_sources(tmp_path):
+    (tmp_path / "t.v").write_text("// LiteX sha1 : 1234567\n// Date       : 2026-01-01 00:00:00\n"
+                                  "module t; endmodule\n")
+    (tmp_path / "r.sv").write_text("module r; endmodule\n")
+    (tmp_path / "t.ys").write_text("read_verilog -sv %s\nread_verilog %s\nsynth_ecp5 -top t\n" % (
+        tmp_path / "r.sv", tmp_path / "t.v"))
+    (tmp_path / "t.lpf").write_text('LOCATE COMP "clk" SITE "P6";\n')
+    g = build.Gateware(name="t", family="ecp5", flow={}, sys_hz=1, dir=str(tmp_path),
+                       ys=str(tmp_path / "t.ys"), constraints=str(tmp_path / "t.lpf"),
+                       pre_pack=None, what="")
+    first = build.gateware_digest(g)
+    (tmp_path / "t.v").write_text("// LiteX sha1 : 89abcde\n// Date       : 2026-02-02 01:01:01\n"
+                                  "module t; endmodule\n")
+    assert build.gateware_digest(g) == first
+    (tmp_path / "r.sv").write_text("module r; wire w; endmodule\n")
+    assert build.gateware_digest(g) != first
