@@ -18,7 +18,7 @@
 #   --json FILE merge the figures into FILE (docs/data/boards.json, which
 #               docs/synthesis.md's Boards section renders:
 #               scripts/docs/render.py), after every seed
-#   --reuse     keep the netlist and the seeds already in DIR/result.json
+#   --reuse     keep the netlist, and each seed whose files in DIR are newer,
 #               when the gateware (LiteX's output, the RTL, the constraints)
 #               is the same: a stopped run goes on where it stopped
 # Every seed must reach 1.15 x the board's system clock (57.5 MHz for the

