@@ -143,7 +143,8 @@ def peer_gateware(name: str, out: str) -> Gateware:
     gw = os.path.join(out, stem, "gateware")  # its Yosys script reads the Verilog from there
     like = target(peer["like"])
     # LiteX-CNC names its build after the platform: colorlight_5a_75b.
-    top = os.path.splitext([f for f in os.listdir(gw) if f.endswith(".ys")][0])[0]
+    top = [f[len("build_"):-len(".sh")] for f in os.listdir(gw)
+           if f.startswith("build_") and f.endswith(".sh")][0]
     g = _gateware(top, like.FLOW, peer["sys_hz"], gw, peer["what"].format(version=version("litexcnc")))
     return g
 
