@@ -609,15 +609,20 @@ def r_boards(_):
                 return "-"
             c = u[k]
             return "%s / %s `%s`" % (grp(c["used"]), grp(c["available"]), c["cell"])
-        seeds = []
+        seeds = []  # [seeds, text]: seeds with the same text in one entry
         for r in b["runs"]:
             if "no_fit" in r:
-                seeds.append("%d: does not fit (%s)" % (r["seed"], ", ".join(
-                    "%s %s of %s" % (o["cell"], grp(o["used"]), grp(o["available"]))
-                    for o in r["no_fit"])))
+                text = "does not fit (%s)" % ", ".join(
+                    "`%s` %s of %s" % (o["cell"], grp(o["used"]), grp(o["available"]))
+                    for o in r["no_fit"])
             else:
-                seeds.append("%d: %.2f%s" % (r["seed"], r["fmax_mhz"],
-                                             "" if r["fmax_mhz"] >= b["need_mhz"] else " (**slow**)"))
+                text = "%.2f%s" % (r["fmax_mhz"],
+                                   "" if r["fmax_mhz"] >= b["need_mhz"] else " (**slow**)")
+            if seeds and seeds[-1][1] == text and "does not fit" in text:
+                seeds[-1][0].append(r["seed"])
+            else:
+                seeds.append([[r["seed"]], text])
+        seeds = ["%s: %s" % ("/".join(str(x) for x in ss), text) for ss, text in seeds]
         sizes = sorted({r["bitstream_bytes"] for r in b["runs"] if "bitstream_bytes" in r})
         size = " / ".join(grp(x) for x in sizes) if sizes else "-"
         rows.append(["`%s`" % n, b["what"], cell("lut"), cell("ff"), cell("bram"),
@@ -626,8 +631,8 @@ def r_boards(_):
                      "`%s` at `%s`, %s" % (b["command"], b["commit"], b["date"])])
         t = b["tools"]
         yosys = re.sub(r"^(Yosys \S+ \(git sha1 \w+).*$", r"\1)", t["yosys"])
-        pnr = re.sub(r"^(\S+) -- Next Generation Place and Route \(Version (.*)\)$", r"\1 \2",
-                     t["nextpnr"])
+        pnr = re.sub(r'^"?([^"\s]+)"? -- Next Generation Place and Route \(Version (.*)\)$',
+                     r"\1 \2", t["nextpnr"])
         tools.append("`%s`: %s; %s; %s; LiteX %s" % (n, yosys, pnr, t["packer"], t["litex"]))
     return table(["board", "design", "logic used / part", "FF used / part", "BRAM used / part",
                   "sys clock (MHz)", "Fmax per seed (MHz)", "bitstream (bytes)", "passes",
