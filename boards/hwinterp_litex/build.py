@@ -284,6 +284,27 @@ def sys_fmax(report: dict, sys_hz: int):
     return net, fmax[net]["achieved"]
 
 
+def critical_path(log: str, net: str):
+    """The routed design's critical path on clock `net` from nextpnr's log (its last report
+    of that clock): the first source, the last sink, logic and routing ns, or None."""
+    text = open(log, errors="replace").read()
+    start = text.rfind(f"Critical path report for clock '{net}' (posedge -> posedge)")
+    if start < 0:
+        return None
+    block = text[start:text.find("\n\n", start)]
+    cells = re.findall(r"(?:Source|Sink) (\S+)", block)
+    m = re.search(r"([\d.]+) ns logic, ([\d.]+) ns routing", block)
+    if not cells or not m:
+        return None
+    through = []  # the signals the path's cells are named after (Yosys names a mapped cell
+    for c in re.findall(r"Source (\S+)", block):  # after a signal it drives or reads)
+        name = re.split(r"_(?:TRELLIS|LUT\d|PFUMX|CCU2C|DFF|ALU|MUX2|SB_)|\.", c)[0]
+        if name and name not in through:
+            through.append(name)
+    return {"from": cells[0], "to": cells[-1], "logic_ns": float(m.group(1)),
+            "routing_ns": float(m.group(2)), "through": through}
+
+
 def log_utilization(log: str) -> dict:
     """nextpnr's "Device utilisation" lines of a log: {cell: {used, available}}."""
     text = open(log, errors="replace").read()
@@ -363,6 +384,9 @@ def seed_result(g: Gateware, seed: int, out: str, cells: dict):
                       utilization=utilization(used, g.family, cells),
                       placed={k: v["used"] for k, v in used.items() if v["used"]},
                       bitstream=os.path.relpath(bit, out), bitstream_bytes=os.path.getsize(bit))
+        path = critical_path(log, net) if os.path.exists(log) else None
+        if path:
+            result["critical_path"] = path
         return result
     if fresh(log):
         o = overflow(log)

@@ -634,6 +634,19 @@ def r_boards(_):
         pnr = re.sub(r'^"?([^"\s]+)"? -- Next Generation Place and Route \(Version (.*)\)$',
                      r"\1 \2", t["nextpnr"])
         tools.append("`%s`: %s; %s; %s; LiteX %s" % (n, yosys, pnr, t["packer"], t["litex"]))
+    slow = []
+    for n in names:
+        b = d["boards"][n]
+        for r in b["runs"]:
+            cp = r.get("critical_path")
+            if "fmax_mhz" in r and r["fmax_mhz"] < b["need_mhz"] and cp:
+                slow.append("- `%s`, seed %d: `%s` -> `%s`, %.2f ns logic + %.2f ns routing, "
+                            "through cells named after %s." % (
+                                n, r["seed"], cp["from"], cp["to"], cp["logic_ns"],
+                                cp["routing_ns"], ", ".join("`%s`" % x for x in cp["through"])))
+    if slow:
+        slow = ["", "The critical path of each seed below its target (nextpnr's names of the "
+                "flattened netlist):", ""] + slow
     return table(["board", "design", "logic used / part", "FF used / part", "BRAM used / part",
                   "sys clock (MHz)", "Fmax per seed (MHz)", "bitstream (bytes)", "passes",
                   "measured with"], rows) + [
@@ -641,7 +654,8 @@ def r_boards(_):
         "%.2f x the system clock. Logic, FF, BRAM: nextpnr's placed cells (ECP5 `TRELLIS_COMB` "
         "is a LUT4 or half a carry, iCE40 `ICESTORM_LC` a LUT4 with its flip-flop, the "
         "iCE40's FF the netlist's `SB_DFF*`). Bitstream: the packed file of each seed (ECP5 "
-        "compressed)." % d["margin"], "", "Tools: " + "; ".join(tools) + ".", "", source(d)]
+        "compressed)." % d["margin"]] + slow + ["", "Tools: " + "; ".join(tools) + ".", "",
+                                                source(d)]
 
 
 RENDERERS = {

@@ -118,3 +118,24 @@ def test_gateware_digest_ignores_litex_s_date_and_follows_the_sources(tmp_path):
     assert build.gateware_digest(g) == first
     (tmp_path / "r.sv").write_text("module r; wire w; endmodule\n")
     assert build.gateware_digest(g) != first
+
+
+def test_critical_path_is_the_last_report_of_the_clock(tmp_path):
+    log = tmp_path / "nextpnr.log"
+    log.write_text(
+        "Info: Critical path report for clock 'clk' (posedge -> posedge):\n"
+        "Info:   clk-to-q  1.00  1.00 Source early_q_TRELLIS_FF_Q.Q\n"
+        "Info: 1.00 ns logic, 0.00 ns routing\n\n"
+        "Info: Critical path report for clock 'clk' (posedge -> posedge):\n"
+        "Info:   clk-to-q  5.61  5.61 Source storage_6.0.0.DOA8\n"
+        "Info:    routing  1.32  6.93 Net storage_6.0.0_DOA8[2] (22,25) -> (22,16)\n"
+        "Info:                          Sink addr_TRELLIS_FF_Q_1_DI_LUT4_Z.C\n"
+        "Info:      logic  0.24  7.17 Source addr_TRELLIS_FF_Q_1_DI_LUT4_Z.F\n"
+        "Info:    routing  0.41  7.58 Net n (47,17) -> (47,17)\n"
+        "Info:                          Sink led_TRELLIS_FF_CE.CE\n"
+        "Info: 5.85 ns logic, 1.73 ns routing\n\n"
+        "Info: Critical path report for clock 'eth' (posedge -> posedge):\n")
+    cp = build.critical_path(str(log), "clk")
+    assert cp == {"from": "storage_6.0.0.DOA8", "to": "led_TRELLIS_FF_CE.CE", "logic_ns": 5.85,
+                  "routing_ns": 1.73, "through": ["storage_6", "addr"]}
+    assert build.critical_path(str(log), "sys") is None
