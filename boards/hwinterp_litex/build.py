@@ -102,9 +102,19 @@ def tool(name: str) -> str:
 
 
 def run(argv, log, cwd):
-    """Runs a tool under nice, its output to `log`; a failure raises Failed naming the log."""
+    """Runs a tool under nice, its output to `log`; returns its exit status. A YoWASP tool
+    sees the clone and the build's folder (YOWASP_MOUNT: without it, YoWASP opens every
+    folder of / and, on some machines, cannot write under /tmp)."""
+    env = dict(os.environ)
+    if os.path.basename(argv[0]).startswith("yowasp-") and "YOWASP_MOUNT" not in env:
+        dirs = []
+        for d in (ROOT, os.path.abspath(cwd), os.path.dirname(os.path.abspath(log))):
+            if not any(d == x or d.startswith(x + os.sep) for x in dirs):
+                dirs.append(d)
+        env["YOWASP_MOUNT"] = ":".join(f"{d}={d}" for d in dirs)
     with open(log, "w") as f:
-        r = subprocess.run(["nice", "-n", "19"] + argv, cwd=cwd, stdout=f, stderr=subprocess.STDOUT)
+        r = subprocess.run(["nice", "-n", "19"] + argv, cwd=cwd, stdout=f, stderr=subprocess.STDOUT,
+                           env=env)
     return r.returncode
 
 
