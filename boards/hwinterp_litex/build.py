@@ -195,13 +195,30 @@ def gateware_digest(g: Gateware) -> str:
 
 # ---------------------------------------------------------------- the flow
 
+def absolute_memory_files(g: Gateware):
+    """LiteX's Verilog reads its memory contents (the identifier ROM, <name>_mem.init) by a
+    relative path: made absolute, as hwinterp_litex/sim.py does (YoWASP sees only the
+    folders it is given). After the digest, which is of LiteX's own output."""
+    top = os.path.join(g.dir, f"{g.name}.v")
+    with open(top) as f:
+        text = f.read()
+    for name in os.listdir(g.dir):
+        if name.endswith(".init"):
+            text = text.replace(f'"{name}"', f'"{os.path.join(g.dir, name)}"')
+    with open(top, "w") as f:
+        f.write(text)
+
+
 def synthesize(g: Gateware) -> dict:
     """LiteX's Yosys script through YoWASP Yosys; the cell counts of its stat."""
     script = open(g.ys).read()
     if g.family == "ice40" and g.flow["device"] != "up5k":
         # LiteX's IceStorm tool chain asks for DSPs on every iCE40; the HX parts have none.
         script = script.replace("synth_ice40 -dsp", "synth_ice40")
-    script = script.rstrip() + f"\ntee -q -o {g.name}_stat.json stat -json\n"
+    # every path absolute: YoWASP sees only the folders it is given (run)
+    script = re.sub(r"^write_json\s+(\S+)\s*$",
+                    lambda m: "write_json " + os.path.join(g.dir, m.group(1)), script, flags=re.M)
+    script = script.rstrip() + f"\ntee -q -o {os.path.join(g.dir, g.name)}_stat.json stat -json\n"
     ys = os.path.join(g.dir, f"{g.name}_board.ys")
     with open(ys, "w") as f:
         f.write(script)
@@ -437,6 +454,7 @@ def build(name: str, seeds: list[int], out: str, reuse: bool = False, on_seed=No
     os.makedirs(out, exist_ok=True)
     g = peer_gateware(name, out) if name in PEERS else board_gateware(name, out)
     digest = gateware_digest(g)
+    absolute_memory_files(g)
     netlist = os.path.join(g.dir, f"{g.name}.json")
     try:
         with open(netlist + ".sha256") as f:
