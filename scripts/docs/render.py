@@ -623,7 +623,7 @@ def r_boards(_):
             else:
                 seeds.append([[r["seed"]], text])
         seeds = ["%s: %s" % ("/".join(str(x) for x in ss), text) for ss, text in seeds]
-        sizes = sorted({r["bitstream_bytes"] for r in b["runs"] if "bitstream_bytes" in r})
+        sizes = [r["bitstream_bytes"] for r in b["runs"] if "bitstream_bytes" in r]
         size = " / ".join(grp(x) for x in sizes) if sizes else "-"
         rows.append(["`%s`" % n, b["what"], cell("lut"), cell("ff"), cell("bram"),
                      "%g, needs %.2f" % (b["sys_mhz"], b["need_mhz"]), "; ".join(seeds), size,
@@ -652,9 +652,10 @@ def r_boards(_):
                   "measured with"], rows) + [
         "", "Fmax: nextpnr's figure for the system clock's domain; each seed must reach "
         "%.2f x the system clock. Logic, FF, BRAM: nextpnr's placed cells (ECP5 `TRELLIS_COMB` "
-        "is a LUT4 or half a carry, iCE40 `ICESTORM_LC` a LUT4 with its flip-flop, the "
-        "iCE40's FF the netlist's `SB_DFF*`). Bitstream: the packed file of each seed (ECP5 "
-        "compressed)." % d["margin"]] + slow + ["", "Tools: " + "; ".join(tools) + ".", "",
+        "is a LUT4 or half a carry, Gowin's `LUT4` without its `ALU` carry cells, iCE40 "
+        "`ICESTORM_LC` a LUT4 with its flip-flop, the iCE40's FF the netlist's `SB_DFF*`). "
+        "Bitstream: the packed file of each seed, in seed order (ECP5 `.bit` compressed; "
+        "Gowin's `.fs` is text, a character a bit)." % d["margin"]] + slow + ["", "Tools: " + "; ".join(tools) + ".", "",
                                                 source(d)]
 
 
