@@ -133,10 +133,10 @@ def board_gateware(name: str, out: str) -> Gateware:
     builder = Builder(soc, output_dir=out, gateware_dir=gw, compile_software=False,
                       compile_gateware=False)
     builder.build(run=False, build_name=name)
+    params = ", ".join(f"{k}={cfg.params[k]}" for k in ("FIFO_DEPTH", "PROFILE") if k in cfg.params)
+    link = "Etherbone over LiteEth" if cfg.link == "etherbone" else "Etherbone over its UART"
     return _gateware(name, mod.FLOW, cfg.sys_hz, gw,
-                     f"hwinterp's motion_soc ({cfg.variant}, {cfg.axes} axes, "
-                     f"{', '.join(f'{k}={v}' for k, v in cfg.params.items() if k in ('FIFO_DEPTH', 'PROFILE'))}) "
-                     f"behind {'Etherbone over LiteEth' if cfg.link == 'etherbone' else 'Etherbone over its UART'}")
+                     f"hwinterp's motion_soc ({cfg.variant}, {cfg.axes} axes, {params}) behind {link}")
 
 
 def peer_gateware(name: str, out: str) -> Gateware:
