@@ -25,10 +25,10 @@
 # Colorlight's 50, 31.05 for the Tang Nano's 27, 13.8 for the HX8K's 12).
 # Exit status: 0 built, every seed fast enough; 1 a seed does not fit or is
 # too slow (named), or a tool failed; 2 bad input.
-# Runs under nice. Measured on 2 cores shared with other jobs (load 6 to 8):
+# Runs under nice. Measured on 2 cores shared with other jobs (load 5 to 8):
 # the Colorlight 9 min of synthesis and 20 to 27 min a seed, the Tang Nano
-# 2 min and 71 min a seed, LiteX-CNC's firmware 4 min and 9 min a seed, the
-# HX8K under 2 min (its placement stops at once: it does not fit).
+# 2 min and 71 min a seed, LiteX-CNC's firmware 4 min and 7 to 9 min a
+# seed, the HX8K under 2 min (its placement stops at once: it does not fit).
 # Example: scripts/board.sh colorlight_5a_75b --seeds '1 2 3'
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
