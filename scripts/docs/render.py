@@ -598,6 +598,73 @@ def r_profile_programs(_):
                  rows) + ["", d["what"] + ".", "", source(d)]
 
 
+def r_boards(_):
+    """docs/synthesis.md's Boards section: each board's bitstream build (scripts/board.sh:
+    hwinterp_litex/build.py), the peer's beside."""
+    d = load("boards.json")
+    order = ["colorlight_5a_75b", "tang_nano_20k", "ice40_hx8k_breakout"]
+    names = [n for n in order if n in d["boards"]] + sorted(
+        n for n in d["boards"] if n not in order)
+    rows, tools = [], []
+    for n in names:
+        b = d["boards"][n]
+        u = next((r["utilization"] for r in b["runs"] if r.get("utilization")), {})
+
+        def cell(k):
+            if k not in u:
+                return "-"
+            c = u[k]
+            return "%s / %s `%s`" % (grp(c["used"]), grp(c["available"]), c["cell"])
+        seeds = []  # [seeds, text]: seeds with the same text in one entry
+        for r in b["runs"]:
+            if "no_fit" in r:
+                text = "does not fit (%s)" % ", ".join(
+                    "`%s` %s of %s" % (o["cell"], grp(o["used"]), grp(o["available"]))
+                    for o in r["no_fit"])
+            else:
+                text = "%.2f%s" % (r["fmax_mhz"],
+                                   "" if r["fmax_mhz"] >= b["need_mhz"] else " (**slow**)")
+            if seeds and seeds[-1][1] == text and "does not fit" in text:
+                seeds[-1][0].append(r["seed"])
+            else:
+                seeds.append([[r["seed"]], text])
+        seeds = ["%s: %s" % ("/".join(str(x) for x in ss), text) for ss, text in seeds]
+        sizes = [r["bitstream_bytes"] for r in b["runs"] if "bitstream_bytes" in r]
+        size = " / ".join(grp(x) for x in sizes) if sizes else "-"
+        rows.append(["`%s`" % n, b["what"], cell("lut"), cell("ff"), cell("bram"),
+                     "%g, needs %.2f" % (b["sys_mhz"], b["need_mhz"]), "; ".join(seeds), size,
+                     "yes" if b["passed"] else "**no**",
+                     "`%s` at `%s`, %s" % (b["command"], b["commit"], b["date"])])
+        t = b["tools"]
+        yosys = re.sub(r"^(Yosys \S+ \(git sha1 \w+).*$", r"\1)", t["yosys"])
+        pnr = re.sub(r'^"?([^"\s]+)"? -- Next Generation Place and Route \(Version (.*)\)$',
+                     r"\1 \2", t["nextpnr"])
+        tools.append("`%s`: %s; %s; %s; LiteX %s" % (n, yosys, pnr, t["packer"], t["litex"]))
+    slow = []
+    for n in names:
+        b = d["boards"][n]
+        for r in b["runs"]:
+            cp = r.get("critical_path")
+            if "fmax_mhz" in r and r["fmax_mhz"] < b["need_mhz"] and cp:
+                slow.append("- `%s`, seed %d: `%s` -> `%s`, %.2f ns logic + %.2f ns routing, "
+                            "through cells named after %s." % (
+                                n, r["seed"], cp["from"], cp["to"], cp["logic_ns"],
+                                cp["routing_ns"], ", ".join("`%s`" % x for x in cp["through"])))
+    if slow:
+        slow = ["", "The critical path of each seed below its target (nextpnr's names of the "
+                "flattened netlist):", ""] + slow
+    return table(["board", "design", "logic used / part", "FF used / part", "BRAM used / part",
+                  "sys clock (MHz)", "Fmax per seed (MHz)", "bitstream (bytes)", "passes",
+                  "measured with"], rows) + [
+        "", "Fmax: nextpnr's figure for the system clock's domain; each seed must reach "
+        "%.2f x the system clock. Logic, FF, BRAM: nextpnr's placed cells (ECP5 `TRELLIS_COMB` "
+        "is a LUT4 or half a carry, Gowin's `LUT4` without its `ALU` carry cells, iCE40 "
+        "`ICESTORM_LC` a LUT4 with its flip-flop, the iCE40's FF the netlist's `SB_DFF*`). "
+        "Bitstream: the packed file of each seed, in seed order (ECP5 `.bit` compressed; "
+        "Gowin's `.fs` is text, a character a bit)." % d["margin"]] + slow + ["", "Tools: " + "; ".join(tools) + ".", "",
+                                                source(d)]
+
+
 RENDERERS = {
     "folder-graph": ("tb", r_folder_graph),
     "synth-paths": ("docs/synth.json", r_synth_paths),
@@ -630,6 +697,7 @@ RENDERERS = {
     "planner": ("docs/data/planner_bench.json", r_planner),
     "synth-blocks": ("docs/data/synth_blocks.json", r_synth_blocks),
     "link-size": ("docs/data/link_size.json", r_link_size),
+    "boards": ("docs/data/boards.json", r_boards),
     "soc-timing": ("docs/data/soc.json", r_soc_timing),
     "soc-tests": ("docs/data/soc.json", r_soc_tests),
     "profile-ruckig": ("docs/data/profile_ruckig.json", r_profile_ruckig),
