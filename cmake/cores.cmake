@@ -85,6 +85,11 @@ hwinterp_synth_block(NAME motion_soc_wb_n3 TOP motion_soc_wb FILES motion_soc YO
 hwinterp_synth_block(NAME motion_soc_axil_prof_n3 TOP motion_soc_axil FILES motion_soc YOSYS yowasp
   VARIANT motion_top_n3 PARAMS FIFO_DEPTH=16 PROFILE=1 SPD_W=48 TICK_W=10 LEN_W=10 PROF_LVL_W=16
   MV_OPS_W=28)
+# ... and the Wishbone top with the profile at the same widths: the build for
+# the iCE40-HX8K breakout board (docs/soc.md, "Fit on the HX8K").
+hwinterp_synth_block(NAME motion_soc_wb_prof_n3 TOP motion_soc_wb FILES motion_soc YOSYS yowasp
+  VARIANT motion_top_n3 PARAMS FIFO_DEPTH=16 PROFILE=1 SPD_W=48 TICK_W=10 LEN_W=10 PROF_LVL_W=16
+  MV_OPS_W=28)
 # feed_profile: the jerk-limited feed profile (docs/profile.md) at the widths
 # the harness runs it (tb/lockstep/harness_profile.h; rtl/CMakeLists.txt
 # Verilates Vfeed_profile_f<W>_cc from this line, at every variant's FEED_W).
