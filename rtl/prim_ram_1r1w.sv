@@ -16,7 +16,8 @@
 //      2 * WIDTH flip-flops and WIDTH LUTs).
 //   0: the user never does it (a FIFO whose read and write pointers differ
 //      whenever both ports act); the RAM is used as it is (Yosys's
-//      no_rw_check), and simulation stops with an error if it happens.
+//      no_rw_check), and simulation stops with an error if it happens (a
+//      formal proof of the block around it asserts it: a_no_same_word_rw).
 module prim_ram_1r1w #(
   parameter int WIDTH = 32,          // bits a word (>= 1)
   parameter int DEPTH = 16,          // words (>= 2)
@@ -53,7 +54,13 @@ module prim_ram_1r1w #(
       if (we_i) mem_q[waddr_i] <= wdata_i;
       if (re_i) rdata_q <= mem_q[raddr_i];
     end
-`ifndef SYNTHESIS
+`ifdef FORMAL
+    // A proof of the block that uses it (scripts/formal.sh) proves it too.
+    always_comb begin
+      if (we_i && re_i) a_no_same_word_rw: assert (waddr_i != raddr_i);
+    end
+`elsif SYNTHESIS
+`else
     always_ff @(posedge clk_i) begin
       if (we_i && re_i && waddr_i == raddr_i) begin
         $error("prim_ram_1r1w: a read and a write of word %0d in one clock (SAME_WORD_RW = 0)",
