@@ -139,7 +139,12 @@ module motion_soc #(
 
   localparam int PTR_W = $clog2(FIFO_DEPTH);
   localparam int LVL_W = $clog2(FIFO_DEPTH + 1);
-  // A FIFO entry: {at, timed, feed, ops, ccw, end, center, plane, delta, arc}.
+  // A FIFO entry: {at, timed, feed, ops, ccw, end, center, plane, delta, arc};
+  // with PROFILE = 1 without {at, timed} (ENTRY_W = E_TIMED): a timed push
+  // is refused there, so every entry's timed bit would be 0 (the head reads
+  // it as 0 from the bits above the RAM's word, and the apply-at compare
+  // folds away). 65 bits less: 16 SB_RAM40_4K instead of 20 at
+  // motion_top_n3's widths.
   localparam int E_ARC    = 0;
   localparam int E_DELTA  = E_ARC + 1;
   localparam int E_PLANE  = E_DELTA + AXES * ACC_W;
@@ -150,7 +155,8 @@ module motion_soc #(
   localparam int E_FEED   = E_OPS + OPS_W;
   localparam int E_TIMED  = E_FEED + FEED_W + 1;
   localparam int E_AT     = E_TIMED + 1;
-  localparam int ENTRY_W  = E_AT + 64;
+  localparam int FULL_W   = E_AT + 64;   // every field
+  localparam int ENTRY_W  = (PROFILE == 0) ? FULL_W : E_TIMED;
   // A move entry (the profile's FIFO): {max, end, target, ops}.
   localparam int M_OPS    = 0;
   localparam int M_TARGET = M_OPS + MV_OPS_W;
@@ -181,6 +187,7 @@ module motion_soc #(
   logic [63:0] ops64;
   logic [31:0] feed_w32, cmd_feed_w32;
   logic [31:0] step_len32, step_space32, dir_setup32, dir_hold32;
+  logic [FULL_W-1:0]  push_all;      // the entry with every field (the RAM takes ENTRY_W bits)
   /* verilator lint_on UNUSEDSIGNAL */
   logic [ENTRY_W-1:0] push_entry;
   logic [MV_W-1:0]    push_move;
@@ -211,19 +218,20 @@ module motion_soc #(
     dir_setup32  = sat32(hwif_out_i.dir_setup.value.value, TIM_W);
     dir_hold32   = sat32(hwif_out_i.dir_hold.value.value, TIM_W);
 
-    push_entry = '0;
-    push_entry[E_ARC] = hwif_out_i.cmd_flags.arc.value;
-    for (int i = 0; i < AXES; i++) push_entry[E_DELTA + i*ACC_W +: ACC_W] = delta64[i][ACC_W-1:0];
-    push_entry[E_PLANE +: 2] = hwif_out_i.cmd_flags.plane.value;
+    push_all = '0;
+    push_all[E_ARC] = hwif_out_i.cmd_flags.arc.value;
+    for (int i = 0; i < AXES; i++) push_all[E_DELTA + i*ACC_W +: ACC_W] = delta64[i][ACC_W-1:0];
+    push_all[E_PLANE +: 2] = hwif_out_i.cmd_flags.plane.value;
     for (int i = 0; i < 2; i++) begin
-      push_entry[E_CENTER + i*COORD_W +: COORD_W] = center64[i][COORD_W-1:0];
-      push_entry[E_END + i*COORD_W +: COORD_W]    = end64[i][COORD_W-1:0];
+      push_all[E_CENTER + i*COORD_W +: COORD_W] = center64[i][COORD_W-1:0];
+      push_all[E_END + i*COORD_W +: COORD_W]    = end64[i][COORD_W-1:0];
     end
-    push_entry[E_CCW] = hwif_out_i.cmd_flags.ccw.value;
-    push_entry[E_OPS +: OPS_W] = ops64[OPS_W-1:0];
-    push_entry[E_FEED +: FEED_W + 1] = cmd_feed_w32[FEED_W:0];
-    push_entry[E_TIMED] = hwif_out_i.cmd_flags.timed.value;
-    push_entry[E_AT +: 64] = {hwif_out_i.cmd_at.hi.value, hwif_out_i.cmd_at.lo.value};
+    push_all[E_CCW] = hwif_out_i.cmd_flags.ccw.value;
+    push_all[E_OPS +: OPS_W] = ops64[OPS_W-1:0];
+    push_all[E_FEED +: FEED_W + 1] = cmd_feed_w32[FEED_W:0];
+    push_all[E_TIMED] = hwif_out_i.cmd_flags.timed.value;
+    push_all[E_AT +: 64] = {hwif_out_i.cmd_at.hi.value, hwif_out_i.cmd_at.lo.value};
+    push_entry = push_all[ENTRY_W-1:0];
 
     push_move = '0;
     push_move[M_OPS +: MV_OPS_W]      = MV_OPS_W'(hwif_out_i.cmd_mv_ops.value.value);
@@ -289,6 +297,7 @@ module motion_soc #(
   logic                full;
   logic                re;
   logic [ENTRY_W-1:0]  head_entry;
+  logic [FULL_W-1:0]   head_all;  // head_entry, the fields PROFILE = 1 leaves out 0
   logic                head_due, head_late;
   logic                cmd_valid, cmd_ready, cmd_take;
   logic [63:0]         head_at;
@@ -317,9 +326,10 @@ module motion_soc #(
   assign push_full    = push && !push_refused && full;
   assign push_ok      = push && !push_refused && !full;
 
-  assign head_at   = head_entry[E_AT +: 64];
-  assign head_due  = !head_entry[E_TIMED] || time_q >= head_at;
-  assign head_late = head_entry[E_TIMED] && time_q > head_at;
+  assign head_all = FULL_W'(head_entry);
+  assign head_at   = head_all[E_AT +: 64];
+  assign head_due  = !head_all[E_TIMED] || time_q >= head_at;
+  assign head_late = head_all[E_TIMED] && time_q > head_at;
   assign stop_wait = stop_open_q && prof_busy;
   assign cmd_hold  = stop_wait && level_c <= level_m;
   assign cmd_valid = head_q && head_due && !abort && !cmd_hold;
