@@ -82,14 +82,13 @@ hwinterp_synth_block(NAME motion_soc_wb_n3 TOP motion_soc_wb FILES motion_soc YO
   VARIANT motion_top_n3 PARAMS FIFO_DEPTH=16)
 # ... and the AXI4-Lite top with the jerk-limited feed profile (PROFILE=1,
 # rtl/motion_soc.sv) at the profile's widths of feed_profile below.
+set(soc_profile PROFILE=1 SPD_W=48 TICK_W=10 LEN_W=10 PROF_LVL_W=16 MV_OPS_W=28)
 hwinterp_synth_block(NAME motion_soc_axil_prof_n3 TOP motion_soc_axil FILES motion_soc YOSYS yowasp
-  VARIANT motion_top_n3 PARAMS FIFO_DEPTH=16 PROFILE=1 SPD_W=48 TICK_W=10 LEN_W=10 PROF_LVL_W=16
-  MV_OPS_W=28)
+  VARIANT motion_top_n3 PARAMS FIFO_DEPTH=16 ${soc_profile})
 # ... and the Wishbone top with the profile at the same widths: the build for
 # the iCE40-HX8K breakout board (docs/soc.md, "Fit on the HX8K").
 hwinterp_synth_block(NAME motion_soc_wb_prof_n3 TOP motion_soc_wb FILES motion_soc YOSYS yowasp
-  VARIANT motion_top_n3 PARAMS FIFO_DEPTH=16 PROFILE=1 SPD_W=48 TICK_W=10 LEN_W=10 PROF_LVL_W=16
-  MV_OPS_W=28)
+  VARIANT motion_top_n3 PARAMS FIFO_DEPTH=16 ${soc_profile})
 # feed_profile: the jerk-limited feed profile (docs/profile.md) at the widths
 # the harness runs it (tb/lockstep/harness_profile.h; rtl/CMakeLists.txt
 # Verilates Vfeed_profile_f<W>_cc from this line, at every variant's FEED_W).
@@ -99,4 +98,23 @@ hwinterp_synth_block(NAME feed_profile TOP feed_profile FILES feed_profile
 # at motion_top_n3's widths and the profile's above.
 hwinterp_synth_block(NAME motion_profile_n3 TOP motion_profile FILES motion_profile
   VARIANT motion_top_n3 PARAMS SPD_W=48 TICK_W=10 LEN_W=10 LVL_W=16 MV_OPS_W=28)
+
+# Boards (boards/, docs/boards.md): motion_soc_wb with the feed profile
+# (${soc_profile}) on a LiteX SoC, its system clock and its host link:
+# the Colorlight 5A-75B v8.0 (ECP5, Etherbone over its Gigabit PHY, 4 axes on
+# LiteX-CNC's step/dir pins, 50 MHz from its 25 MHz oscillator), the Sipeed
+# Tang Nano 20K (Gowin GW2AR-18, a UART over its USB bridge, 4 axes, its
+# 27 MHz oscillator) and the Lattice iCE40-HX8K breakout board (a UART over
+# its FT2232H, 3 axes, its 12 MHz oscillator).
+hwinterp_board(NAME colorlight_5a_75b VARIANT motion_top_n4 LINK etherbone SYS_HZ 50000000
+  PARAMS FIFO_DEPTH=64 ${soc_profile})
+hwinterp_board(NAME tang_nano_20k VARIANT motion_top_n4 LINK uart SYS_HZ 27000000 BAUD 1000000
+  PARAMS FIFO_DEPTH=64 ${soc_profile})
+hwinterp_board(NAME ice40_hx8k_breakout VARIANT motion_top_n3 LINK uart SYS_HZ 12000000 BAUD 1000000
+  PARAMS FIFO_DEPTH=16 ${soc_profile})
+# Simulated builds at slower clocks besides each board's own (hwinterp
+# board-sim --clock-hz): whole programs in the tests' time. A UART at 8
+# clocks a bit, the bridge's least.
+hwinterp_board_sim(BOARD colorlight_5a_75b SYS_HZ 1000000)
+hwinterp_board_sim(BOARD tang_nano_20k SYS_HZ 2000000 BAUD 250000)
 hwinterp_finish_variants()

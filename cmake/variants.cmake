@@ -11,6 +11,9 @@ file(MAKE_DIRECTORY ${HWINTERP_GENERATED_DIR})
 set_property(GLOBAL PROPERTY HWINTERP_VARIANTS "")
 file(WRITE ${HWINTERP_GENERATED_DIR}/variants.txt.in "")
 file(WRITE ${HWINTERP_GENERATED_DIR}/blocks.txt.in "")
+file(WRITE ${HWINTERP_GENERATED_DIR}/boards.txt.in "")
+set_property(GLOBAL PROPERTY HWINTERP_BOARDS "")
+set_property(GLOBAL PROPERTY HWINTERP_BOARD_SIMS "")
 
 # hwinterp_write_generated(<name> <text>...): writes the texts, concatenated,
 # to ${HWINTERP_GENERATED_DIR}/<name>, touching the file only when it changed,
@@ -124,6 +127,79 @@ function(hwinterp_synth_block)
     "${B_NAME} ${B_TOP} ${B_FILES} ${B_YOSYS} ${params_line}\n")
 endfunction()
 
+# hwinterp_board(NAME <board> VARIANT <motion_top variant> LINK etherbone|uart
+#                SYS_HZ <hz> [BAUD <baud>] [PARAMS K=V...])
+#
+# Declares a board (boards/, docs/boards.md): motion_soc_wb on a LiteX SoC's
+# bus at the widths of a motion_top VARIANT (declared before it), then PARAMS
+# (motion_soc's own: FIFO_DEPTH, PROFILE and the profile's widths), its
+# system clock SYS_HZ (motion_soc's CLK_HZ) and its host link (BAUD for a
+# UART). boards/hwinterp_litex/config.py reads these lines from
+# cmake/cores.cmake for the gateware; here they give generated/boards.txt
+# (<board> <link> <sys_hz> <baud> K=V...) and the simulated boards'
+# builds (rtl/CMakeLists.txt).
+function(hwinterp_board)
+  cmake_parse_arguments(B "" "NAME;VARIANT;LINK;SYS_HZ;BAUD" "PARAMS" ${ARGN})
+  if(NOT B_NAME OR NOT B_VARIANT OR NOT B_LINK OR NOT B_SYS_HZ)
+    message(FATAL_ERROR "hwinterp_board needs NAME, VARIANT, LINK and SYS_HZ")
+  endif()
+  if(NOT B_LINK MATCHES "^(etherbone|uart)$")
+    message(FATAL_ERROR "hwinterp_board ${B_NAME}: LINK must be etherbone or uart")
+  endif()
+  if(B_LINK STREQUAL "uart" AND NOT B_BAUD)
+    message(FATAL_ERROR "hwinterp_board ${B_NAME}: a UART link needs BAUD")
+  endif()
+  if(NOT B_BAUD)
+    set(B_BAUD 0)
+  endif()
+  get_property(params GLOBAL PROPERTY HWINTERP_VARIANT_${B_VARIANT}_PARAMS)
+  if(NOT params)
+    message(FATAL_ERROR "hwinterp_board ${B_NAME}: no variant ${B_VARIANT} before it")
+  endif()
+  list(APPEND params ${B_PARAMS})
+  set_property(GLOBAL APPEND PROPERTY HWINTERP_BOARDS ${B_NAME})
+  set_property(GLOBAL PROPERTY HWINTERP_BOARD_${B_NAME}_LINK ${B_LINK})
+  set_property(GLOBAL PROPERTY HWINTERP_BOARD_${B_NAME}_SYS_HZ ${B_SYS_HZ})
+  set_property(GLOBAL PROPERTY HWINTERP_BOARD_${B_NAME}_BAUD ${B_BAUD})
+  set_property(GLOBAL PROPERTY HWINTERP_BOARD_${B_NAME}_PARAMS "${params}")
+  string(REPLACE ";" " " params_line "${params}")
+  file(APPEND ${HWINTERP_GENERATED_DIR}/boards.txt.in
+    "${B_NAME} ${B_LINK} ${B_SYS_HZ} ${B_BAUD} ${params_line}\n")
+  # Its simulation at its own clock.
+  hwinterp_board_sim(BOARD ${B_NAME} SYS_HZ ${B_SYS_HZ} BAUD ${B_BAUD})
+endfunction()
+
+# hwinterp_board_sim(BOARD <board> SYS_HZ <hz> [BAUD <baud>])
+#
+# A simulated build of a board (hwinterp board-sim --board <board>
+# --clock-hz <hz>): its gateware at another clock (and UART rate), so that
+# whole programs simulate in less time than at the board's own clock. Every
+# board has one at its own clock; cmake/cores.cmake adds others, and the
+# cache variable HWINTERP_EXTRA_BOARD_SIMS (BOARD:HZ[:BAUD];...) more
+# (scripts/board_sim.sh sets it).
+function(hwinterp_board_sim)
+  cmake_parse_arguments(S "" "BOARD;SYS_HZ;BAUD" "" ${ARGN})
+  get_property(link GLOBAL PROPERTY HWINTERP_BOARD_${S_BOARD}_LINK)
+  if(NOT link)
+    message(FATAL_ERROR "hwinterp_board_sim: no board ${S_BOARD} declared before it")
+  endif()
+  if(NOT S_SYS_HZ MATCHES "^[1-9][0-9]*$")
+    message(FATAL_ERROR "hwinterp_board_sim ${S_BOARD}: SYS_HZ '${S_SYS_HZ}' is not a clock in Hz")
+  endif()
+  if(NOT S_BAUD)
+    get_property(S_BAUD GLOBAL PROPERTY HWINTERP_BOARD_${S_BOARD}_BAUD)
+  endif()
+  set(name ${S_BOARD}_${S_SYS_HZ})
+  get_property(sims GLOBAL PROPERTY HWINTERP_BOARD_SIMS)
+  if(name IN_LIST sims)
+    return()
+  endif()
+  set_property(GLOBAL APPEND PROPERTY HWINTERP_BOARD_SIMS ${name})
+  set_property(GLOBAL PROPERTY HWINTERP_BOARD_SIM_${name}_BOARD ${S_BOARD})
+  set_property(GLOBAL PROPERTY HWINTERP_BOARD_SIM_${name}_SYS_HZ ${S_SYS_HZ})
+  set_property(GLOBAL PROPERTY HWINTERP_BOARD_SIM_${name}_BAUD ${S_BAUD})
+endfunction()
+
 # Called once after cores.cmake: publishes variants.txt and blocks.txt for scripts/synth.sh
 # and hwinterp_variants.h: the Verilated classes of every variant and an
 # X-macro over (core, variant) pairs, plus hwinterp_core_adapters.h, which
@@ -160,6 +236,8 @@ function(hwinterp_finish_variants)
        ${HWINTERP_GENERATED_DIR}/variants.txt ONLY_IF_DIFFERENT)
   file(COPY_FILE ${HWINTERP_GENERATED_DIR}/blocks.txt.in
        ${HWINTERP_GENERATED_DIR}/blocks.txt ONLY_IF_DIFFERENT)
+  file(COPY_FILE ${HWINTERP_GENERATED_DIR}/boards.txt.in
+       ${HWINTERP_GENERATED_DIR}/boards.txt ONLY_IF_DIFFERENT)
   # Newer than cores.cmake even when unchanged: scripts/synth.sh configures
   # again only when cores.cmake is newer than these (nothing builds from them).
   file(TOUCH_NOCREATE ${HWINTERP_GENERATED_DIR}/variants.txt ${HWINTERP_GENERATED_DIR}/blocks.txt)

@@ -23,6 +23,22 @@
 #   step_encode   rtl/step_encode.sv against rtl/formal/step_encode_props.sv:
 #                 each step output type is what its header says; quadrature
 #                 is the Gray state of the step count, one bit a step
+#   link_guard    rtl/link/link_guard.sv against rtl/formal/link_guard_props.sv:
+#                 the host link's sequence guard (docs/link.md) against a
+#                 model of its window, stream and counters; Wishbone rules,
+#                 transparency outside the window, downstream writes only
+#                 from an open guard's data words, to the header's address
+#                 plus the word's index
+#   etherbone_engine  rtl/link/etherbone_engine.f against
+#                 rtl/formal/etherbone_engine_props.sv: nothing of a frame
+#                 runs (no bus access, no reply) unless the frame was whole
+#                 and its CRC right (an account of the frame kept by the
+#                 props file); Wishbone rules; the buffer written only while
+#                 idle, read only while busy
+#   slip_rx uart_tx uart_rx  rtl/link/<block>.sv against its props: the
+#                 SLIP decoder's escape rule; the UART transmitter's bit
+#                 timing (DIV = 5); the receiver (DIV = 8) takes every
+#                 character of an ideal sender once, right, at a fixed clock
 #
 # Usage: scripts/formal.sh [--blocks LIST] [--depth N] [--tim-w "W..."] [--out DIR]
 #   --blocks LIST  blocks to check (default "stepdir_axis step_stage", the
@@ -53,7 +69,8 @@ usage() { sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2; exit 2; }
 stage_blocks=(stepdir_axis step_stage)
 core_blocks=(dda_line ppc_line ppc_arc fixed_ratio motion_top log_stepper)
 other_blocks=(feed_profile step_encode)  # rtl/<block>.f (or rtl/<block>.sv alone), no core contract
-all_blocks=("${stage_blocks[@]}" "${core_blocks[@]}" "${other_blocks[@]}")
+link_blocks=(link_guard etherbone_engine slip_rx uart_tx uart_rx)  # the host link's blocks: rtl/link/<block>.f (or rtl/link/<block>.sv alone)
+all_blocks=("${stage_blocks[@]}" "${core_blocks[@]}" "${other_blocks[@]}" "${link_blocks[@]}")
 
 depth=""
 widths="3 4"
@@ -111,6 +128,13 @@ for b in "${other_blocks[@]}"; do
     block_files[$b]="$(sed -n "/^[^#]/s|^|$root/rtl/|p" "$root/rtl/$b.f" | paste -sd ' ')"
   else
     block_files[$b]="$root/rtl/$b.sv"
+  fi
+done
+for b in "${link_blocks[@]}"; do
+  if [ -f "$root/rtl/link/$b.f" ]; then
+    block_files[$b]="$(sed -n "/^[^#]/s|^|$root/rtl/link/|p" "$root/rtl/link/$b.f" | paste -sd ' ')"
+  else
+    block_files[$b]="$root/rtl/link/$b.sv"
   fi
 done
 # Signals a proof links across the hierarchy after flattening (Yosys 0.23 has

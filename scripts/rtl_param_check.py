@@ -98,19 +98,42 @@ BAD = [
     ("motion_top", {"POS_W": 1}, "POS_W"),
     ("motion_top", {"TIM_W": 1}, "TIM_W"),
     ("motion_top", {"FEED_W": 0}, "FEED_W"),
+    # the host link's blocks (rtl/link/)
+    ("link_guard", {"WIN_BASE": 100}, "WIN_BASE"),
+    ("link_guard", {"WIN_BASE": 2**30}, "WIN_BASE"),
+    ("uart_rx", {"DIV": 7}, "DIV"),
+    ("uart_tx", {"DIV": 1}, "DIV"),
+    ("etherbone_engine", {"BUF_BYTES": 8}, "BUF_BYTES"),
+    ("etherbone_engine", {"BUF_BYTES": 24}, "BUF_BYTES"),
+    ("etherbone_engine", {"BUF_BYTES": 8192}, "BUF_BYTES"),
+    ("etherbone_engine", {"CNT_W": 0}, "CNT_W"),
+    ("etherbone_engine", {"CNT_W": 33}, "CNT_W"),
+    ("uart_etherbone", {"CLK_HZ": 1000000, "BAUD": 200000}, "CLK_HZ and BAUD"),
+    ("uart_etherbone", {"CLK_HZ": 1000000, "BAUD": 105000}, "CLK_HZ and BAUD"),
+    ("uart_etherbone", {"BUF_BYTES": 100}, "BUF_BYTES"),
+    ("uart_etherbone", {"CNT_W": 0}, "CNT_W"),
 ]
 
 
 def file_lists():
-    """module -> its RTL files, dependencies first (a prefix of a core's rtl/<core>.f)."""
+    """module -> its RTL files, dependencies first (a prefix of rtl/<core>.f or
+    rtl/link/<block>.f, whose paths are relative to their folder); a module of
+    rtl/link/ without a list is its file alone."""
     out = {}
-    for name in sorted(os.listdir(os.path.join(ROOT, "rtl"))):
-        if not name.endswith(".f"):
-            continue
-        with open(os.path.join(ROOT, "rtl", name)) as f:
-            files = [l.strip() for l in f if l.strip() and not l.startswith("#")]
-        for k, sv in enumerate(files):
-            out.setdefault(sv[:-3], [os.path.join(ROOT, "rtl", x) for x in files[:k + 1]])
+    for folder in ("rtl", os.path.join("rtl", "link")):
+        d = os.path.join(ROOT, folder)
+        for name in sorted(os.listdir(d)):
+            if not name.endswith(".f"):
+                continue
+            with open(os.path.join(d, name)) as f:
+                files = [os.path.normpath(os.path.join(d, l.strip()))
+                         for l in f if l.strip() and not l.startswith("#")]
+            for k, sv in enumerate(files):
+                out.setdefault(os.path.basename(sv)[:-3], files[:k + 1])
+    d = os.path.join(ROOT, "rtl", "link")
+    for name in sorted(os.listdir(d)):
+        if name.endswith(".sv"):
+            out.setdefault(name[:-3], [os.path.join(d, name)])
     return out
 
 

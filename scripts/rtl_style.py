@@ -1,7 +1,7 @@
 #!/usr/bin/python3
-"""Checks the register style of the RTL (rtl/*.sv; not rtl/formal/).
+"""Checks the register style of the RTL (rtl/*.sv, rtl/link/*.sv; not rtl/formal/).
 
-usage: scripts/rtl_style.py [FILE...]   (default: every rtl/*.sv)
+usage: scripts/rtl_style.py [FILE...]   (default: every rtl/*.sv and rtl/link/*.sv)
 
 Every always_ff block is the lowRISC / PULP common_cells register: an
 asynchronous reset and a copy, nothing else,
@@ -11,7 +11,8 @@ asynchronous reset and a copy, nothing else,
       else begin x_q <= x_d; ... end
     end
 
-so every flip-flop's name ends in _q, its next value is computed into x_d
+(a constant: a literal, or a member of an enum the file declares), so every
+flip-flop's name ends in _q, its next value is computed into x_d
 outside the block (always_comb or assign), and the block holds no enable, no
 arithmetic and no other branch. One exception: a RAM primitive
 (rtl/prim_ram_*.sv) writes its words and its read register in a block clocked
@@ -61,9 +62,21 @@ def block_end(code, start):
         i = t.end()
 
 
+def enum_members(code):
+    """Names of the members of every `typedef enum ... { ... }` in code (constants too)."""
+    names = set()
+    for body in re.findall(r"\btypedef\s+enum\b[^{]*\{([^}]*)\}", code):
+        for item in body.split(","):
+            m = re.match(r"\s*([A-Za-z_]\w*)", item)
+            if m:
+                names.add(m.group(1))
+    return names
+
+
 def check(path):
     with open(path) as f:
         code = strip_comments(f.read())
+    enums = enum_members(code)
     bad = []
     for m in re.finditer(r"\balways_ff\b", code):
         line = code.count("\n", 0, m.start()) + 1
@@ -91,7 +104,7 @@ def check(path):
         for lhs, rhs in NBA.findall(reset):
             if not lhs.endswith("_q"):
                 bad.append(f"{where}: flip-flop `{lhs}` does not end in _q")
-            elif not CONST.match(rhs.strip()):
+            elif not CONST.match(rhs.strip()) and rhs.strip() not in enums:
                 bad.append(f"{where}: `{lhs}` resets to `{rhs.strip()}`, not a constant")
         for lhs, rhs in NBA.findall(run):
             if not lhs.endswith("_q"):
@@ -108,8 +121,8 @@ def main(argv):
     if any(a in ("-h", "--help") for a in argv):
         print(__doc__.strip(), file=sys.stderr)
         return 2
-    files = argv or sorted(os.path.join(ROOT, "rtl", n) for n in os.listdir(os.path.join(ROOT, "rtl"))
-                           if n.endswith(".sv"))
+    files = argv or sorted(os.path.join(ROOT, d, n) for d in ("rtl", os.path.join("rtl", "link"))
+                           for n in os.listdir(os.path.join(ROOT, d)) if n.endswith(".sv"))
     bad = []
     for path in files:
         if not os.path.isfile(path):

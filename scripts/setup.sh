@@ -31,16 +31,21 @@ if [ ${#missing[@]} -gt 0 ]; then
   "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-# The Python environment: (re)made when the requirements file changed since
-# it was installed (a stamp holds the file's hash).
+# The Python environment: (re)made when the requirements file or the host
+# package's definition (sw/host/pyproject.toml: its command and dependencies;
+# requirements.txt installs the package editable, so its code needs no
+# reinstall) changed since it was installed (a stamp holds their hash; so do the board
+# package's, boards/pyproject.toml).
+# pip runs from the project's root: the requirements name the package by a
+# path relative to it.
 venv=${HWINTERP_VENV:-$root/.venv}
 requirements=$root/scripts/requirements.txt
 stamp=$venv/.requirements.sha256
-want=$(sha256sum "$requirements" | cut -d' ' -f1)
+want=$(cat "$requirements" "$root/sw/host/pyproject.toml" "$root/boards/pyproject.toml" | sha256sum | cut -d' ' -f1)
 if [ ! -x "$venv/bin/python3" ] || [ "$(cat "$stamp" 2>/dev/null)" != "$want" ]; then
   echo "setup: installing the Python tool chain (scripts/requirements.txt) into $venv" >&2
   /usr/bin/python3 -m venv "$venv"
-  "$venv/bin/python3" -m pip install -q --disable-pip-version-check --no-input \
-    -r "$requirements" >&2
+  (cd "$root" && "$venv/bin/python3" -m pip install -q --disable-pip-version-check --no-input \
+    -r "$requirements" >&2)
   echo "$want" >"$stamp"
 fi

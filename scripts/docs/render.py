@@ -469,6 +469,20 @@ def r_synth_blocks(_):
         ["module", "what", "instances", "LUT4", "carry", "FF"], rows) + ["", source(d)]
 
 
+def r_link_size(_):
+    d = load("link_size.json")
+    rows = [["`%s`" % b["block"], b["params"], b["lut4"], b["carry"], b["ff"], b["bram"],
+             "%d LC, %d RAM" % (b["hx8k_lc"], b["hx8k_ram"]), "%.2f MHz" % b["fmax_mhz"]]
+            for b in d["blocks"]]
+    parts = [["`%s`" % m["module"], m["lut4"], m["carry"], m["ff"], m["bram"]]
+             for m in d["uart_etherbone_blocks"]]
+    return table(["block", "parameters", "LUT4", "carry", "FF", "SB_RAM40_4K",
+                  "HX8K, in the pin harness", "Fmax there"], rows) + [
+        "", "`uart_etherbone` not flattened, per block (so its total differs a little):", ""] + table(
+        ["block", "LUT4", "carry", "FF", "SB_RAM40_4K"], parts) + ["", "%s (%s)." % (
+            d["what"][0].upper() + d["what"][1:], d["tool"]), "", source(d)]
+
+
 def synth_missed_paths(family):
     """The critical path at every seed of each variant that misses its target on a family
     ("hx8k" or "ecp5"; docs/synth.json, as scripts/synth/publish.py writes it)."""
@@ -608,6 +622,7 @@ RENDERERS = {
     "netlist": ("docs/data/netlist_check.json", r_netlist),
     "planner": ("docs/data/planner_bench.json", r_planner),
     "synth-blocks": ("docs/data/synth_blocks.json", r_synth_blocks),
+    "link-size": ("docs/data/link_size.json", r_link_size),
     "soc-timing": ("docs/data/soc.json", r_soc_timing),
     "soc-tests": ("docs/data/soc.json", r_soc_tests),
     "profile-ruckig": ("docs/data/profile_ruckig.json", r_profile_ruckig),

@@ -13,6 +13,12 @@ Writes (each starts with a line naming this script; never edit them):
   docs/soc_regs.md                      the register page (PeakRDL-markdown)
   hls/gen/motion_soc_regs.h             the C++ register model of the HLS face (scripts/regs/cpp_model.py)
 
+and from the board's map (rtl/regs/board.rdl, compiled with motion_soc.rdl
+and link_guard.rdl: motion_soc and the link's sequence guard on a board's
+bus):
+  sw/host/hwinterp_host/gen/regs.py     the host package's register map (scripts/regs/py_model.py)
+  docs/board_regs.md                    the board's register page (PeakRDL-markdown)
+
 Both register blocks: asynchronous active-low reset, an error response on an
 unmapped address and on a read of a write-only or a write to a read-only
 register (regblock's err_if_bad_addr and err_if_bad_rw), no retiming.
@@ -38,6 +44,9 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 
 RDL = "rtl/regs/motion_soc.rdl"
+# The board's map: these files in order, its top addrmap.
+BOARD_RDL = ("rtl/regs/motion_soc.rdl", "rtl/regs/link_guard.rdl", "rtl/regs/board.rdl")
+BOARD_TOP = "hwinterp_board"
 OUTPUTS = {
     "pkg": "rtl/regs/gen/motion_soc_regs_pkg.sv",
     "axil": "rtl/regs/gen/motion_soc_regs_axil.sv",
@@ -45,6 +54,8 @@ OUTPUTS = {
     "cheader": "sw/motion_soc_regs.h",
     "markdown": "docs/soc_regs.md",
     "cpp": "hls/gen/motion_soc_regs.h",
+    "py": "sw/host/hwinterp_host/gen/regs.py",
+    "board_markdown": "docs/board_regs.md",
 }
 ME = "scripts/regs/generate.py"
 
@@ -73,14 +84,15 @@ def packed(sv):
     return "\n".join(out)
 
 
-def compile_rdl(rdl_path):
+def compile_rdl(rdl_path, *more, top=None):
     from systemrdl import RDLCompiler
     from peakrdl_regblock.udps import ALL_UDPS
     rdlc = RDLCompiler()
     for udp in ALL_UDPS:  # regblock's own properties, as `peakrdl regblock` registers them
         rdlc.register_udp(udp)
-    rdlc.compile_file(rdl_path)
-    return rdlc.elaborate().top
+    for path in (rdl_path,) + more:
+        rdlc.compile_file(path)
+    return rdlc.elaborate(top_def_name=top).top
 
 
 def generate(out_dir, rdl_rel):
@@ -139,6 +151,25 @@ def generate(out_dir, rdl_rel):
         with open(cpath) as f:
             files["cpp"] = f.read()
 
+        # The board's map: the host package's module and the register page.
+        from py_model import PyModelExporter
+        board = compile_rdl(*(os.path.join(ROOT, p) for p in BOARD_RDL), top=BOARD_TOP)
+        ppath = os.path.join(tmp, "regs.py")
+        PyModelExporter().export(board, ppath, source=", ".join(BOARD_RDL),
+                                 generator=f"{ME} (scripts/regs/py_model.py)")
+        with open(ppath) as f:
+            files["py"] = f.read()
+        bpath = os.path.join(tmp, "board.md")
+        MarkdownExporter().export(board, bpath, input_files=list(BOARD_RDL))
+        with open(bpath) as f:
+            md = f.read()
+        files["board_markdown"] = (
+            f"<!-- Generated from {', '.join(BOARD_RDL)} by {ME}; do not edit. -->\n\n"
+            "# Board registers\n\n"
+            "A board's bus as its host link sees it ([link.md](link.md), [host.md](host.md)):\n"
+            "[motion_soc](soc.md) and the link's sequence guard, as PeakRDL-markdown writes it\n"
+            "from the SystemRDL description. Absolute byte addresses; 32-bit accesses.\n\n" + md)
+
     for key, rel in OUTPUTS.items():
         path = os.path.join(out_dir, rel)
         os.makedirs(os.path.dirname(path), exist_ok=True)
@@ -166,7 +197,7 @@ def main(argv):
     for rel in stale:
         print(f"{rel}: stale or missing: run {ME} and commit")
     if not stale:
-        print(f"regs: {len(OUTPUTS)} files are what {RDL} gives")
+        print(f"regs: {len(OUTPUTS)} files are what {RDL} and the board map ({BOARD_RDL[-1]}) give")
     return 1 if stale else 0
 
 

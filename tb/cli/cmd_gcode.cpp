@@ -75,7 +75,12 @@ int run_gcode(int argc, char** argv, int first) {
       .option("profile-window", "N", "commands the profile's planner looks ahead", "16")
       .option("soc-writes", "FILE",
               "write the bus writes that stream the program's commands into motion_soc's "
-              "command FIFO, as JSON (tb/gcode/soc_writes.h), for a test bench of your own")
+              "command FIFO, as JSON (tb/gcode/soc_writes.h: with a profile each command's "
+              "planned move too; the widths, clock, step timing and the per-move grouping), for "
+              "a test bench of your own or the host package (hwinterp-host run, docs/host.md)")
+      .flag("plan-only",
+            "with --soc-writes: compile (and with a profile plan) the program, write the file "
+            "and stop: no lockstep run, no other output")
       .option("feed-hold", "AT:FOR",
               "with a profile: feed hold from AT seconds of the run for FOR seconds, a "
               "controlled stop along the path within the limits, then the planned profile "
@@ -162,6 +167,21 @@ int run_gcode(int argc, char** argv, int first) {
     throw UsageError("--step-types: " + std::to_string(setup.step_types.size()) +
                      " types for the " + std::to_string(variant.axes) + " axes of " +
                      variant.variant + " (give one for every axis, or one per axis)");
+
+  if (args.given("plan-only")) {
+    if (!args.given("soc-writes")) throw UsageError("--plan-only: give --soc-writes FILE with it");
+    for (const char* o : {"bus", "json", "moves-csv", "step-times", "plot", "plot-kinematics",
+                          "vcd", "fst", "feed-hold", "feed-override"})
+      if (args.given(o))
+        throw UsageError(std::string("--plan-only: --") + o +
+                         " needs the lockstep run; --plan-only writes --soc-writes only");
+    check_outputs_writable(args, {"soc-writes"});
+    setup.soc_writes_path = args.str("soc-writes");
+    gcode::plan_soc_writes(setup);
+    std::cout << "hwinterp gcode: " << setup.program << ": wrote " << setup.soc_writes_path << " ("
+              << variant.variant << ")\n";
+    return kExitOk;
+  }
 
   // Every output can be written, or nothing runs.
   trace_from_args(args, setup.bench);

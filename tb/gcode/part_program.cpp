@@ -564,32 +564,77 @@ BusCompare run_bus(const PartProgramSetup& setup, const tb::VariantSpec& l,
   return b;
 }
 
-}  // namespace
-
-tb::VariantSpec part_program_variant(const PartProgramSetup& setup) {
-  return choose(setup).variant().spec;
-}
-
-PartProgramRun run_part_program(const PartProgramSetup& setup) {
-  const Chosen chosen = choose(setup);
-  const tb::VariantSpec& l = chosen.variant().spec;
+MotionWidths widths_of(const tb::VariantSpec& l) {
   MotionWidths widths;
   widths.axes = l.axes;
   widths.acc_w = l.param("ACC_W");
   widths.coord_w = l.param("COORD_W");
   widths.ops_w = l.param("OPS_W");
   widths.feed_w = l.feed_w;
+  return widths;
+}
 
-  // The program's reach first: travel and position counters (tb/gcode/limits.h).
+// Bad input found before anything runs: the program's reach (travel and
+// position counters, tb/gcode/limits.h) and a profile at the wrong FEED_W.
+void check_program(const PartProgramSetup& setup, const tb::VariantSpec& l) {
   {
     auto source = open_source(setup);
     check_reach(*source, setup.machine, l.param("POS_W"), l.variant, setup.program);
   }
-  if (!setup.soc_writes_path.empty()) {
-    auto src = open_source(setup);
-    write_soc_writes(*src, setup.machine, widths, setup.feed_mode, setup.program, l.variant,
-                     setup.soc_writes_path);
+  if (setup.machine.profile != ProfileKind::kOff && l.feed_w != tb::kProfileFeedW)
+    throw cli::UsageError("--profile: the feed profile's build gives " +
+                          std::to_string(tb::kProfileFeedW) + "-bit feed words; " + l.variant +
+                          " takes FEED_W " + std::to_string(l.feed_w));
+}
+
+// The --soc-writes file (tb/gcode/soc_writes.h): the compile again, and with
+// a profile its planned moves from a planner of their own.
+void write_program_soc_writes(const PartProgramSetup& setup, const tb::VariantSpec& l,
+                              const MotionWidths& widths) {
+  SocWritesSetup s;
+  s.program = setup.program;
+  s.canon = setup.canon;
+  s.variant = l.variant;
+  s.widths = widths;
+  s.pos_w = l.pos_w;
+  s.tim_w = l.tim_w;
+  s.mode = setup.feed_mode;
+  std::unique_ptr<PlannedMoves> moves;
+  if (setup.machine.profile != ProfileKind::kOff) {
+    moves = std::make_unique<PlannedMoves>(setup, l, widths);
+    s.profiled = true;
+    s.prof_regs = moves->planner().registers();
+    s.prof_build = tb::feed_profile_build(static_cast<double>(setup.machine.clock_hz));
+    s.prof_window = setup.profile_window;
+    s.prof_accel = moves->planner().accel();
+    s.prof_jerk = moves->planner().jerk();
+    s.next_move = [&moves](tb::ProfileWords& w) { return moves->next(w); };
   }
+  auto src = open_source(setup);
+  write_soc_writes(*src, setup.machine, s, setup.soc_writes_path);
+}
+
+}  // namespace
+
+tb::VariantSpec part_program_variant(const PartProgramSetup& setup) {
+  return choose(setup).variant().spec;
+}
+
+void plan_soc_writes(const PartProgramSetup& setup) {
+  const tb::VariantSpec l = choose(setup).variant().spec;
+  const MotionWidths widths = widths_of(l);
+  check_program(setup, l);
+  write_program_soc_writes(setup, l, widths);
+}
+
+PartProgramRun run_part_program(const PartProgramSetup& setup) {
+  const Chosen chosen = choose(setup);
+  const tb::VariantSpec& l = chosen.variant().spec;
+  const MotionWidths widths = widths_of(l);
+
+  // The program's reach first: travel and position counters (tb/gcode/limits.h).
+  check_program(setup, l);
+  if (!setup.soc_writes_path.empty()) write_program_soc_writes(setup, l, widths);
   auto source = open_source(setup);
   const bool profiled = setup.machine.profile != ProfileKind::kOff;
   auto prog = std::make_shared<Program>(std::move(source), setup.machine, widths, setup.feed_mode,
@@ -602,10 +647,6 @@ PartProgramRun run_part_program(const PartProgramSetup& setup) {
   std::unique_ptr<PlannedMoves> moves;
   std::unique_ptr<tb::ProfileFeed> profile_feed;
   if (profiled) {
-    if (l.feed_w != tb::kProfileFeedW)
-      throw cli::UsageError("--profile: the feed profile's build gives " +
-                            std::to_string(tb::kProfileFeedW) + "-bit feed words; " + l.variant +
-                            " takes FEED_W " + std::to_string(l.feed_w));
     moves = std::make_unique<PlannedMoves>(setup, l, widths);
     profile_feed = std::make_unique<tb::ProfileFeed>(
         moves->planner().registers().q, moves->planner().registers().len,

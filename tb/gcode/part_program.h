@@ -179,6 +179,12 @@ struct PartProgramRun {
 // throws cli::UsageError listing the variants.
 tb::VariantSpec part_program_variant(const PartProgramSetup& setup);
 
+// Compiles the program (and with a profile plans its moves) into
+// setup.soc_writes_path (tb/gcode/soc_writes.h) and runs nothing: `hwinterp
+// gcode --soc-writes FILE --plan-only`. Bad input throws cli::UsageError as
+// run_part_program does.
+void plan_soc_writes(const PartProgramSetup& setup);
+
 // Compiles and runs the program; bad input (the program, the variant, a
 // path that leaves the machine's travel or the core's position counters:
 // tb/gcode/limits.h) throws cli::UsageError before anything is simulated.
