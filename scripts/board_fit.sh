@@ -66,15 +66,18 @@ if t.FLOW.get("family") != "ice40":
     sys.exit(2)
 import contextlib, io
 log = io.StringIO()
-with contextlib.redirect_stdout(log), contextlib.redirect_stderr(log):
-    platform, soc = t.make_soc(cfg)
-    Builder(soc, output_dir=out, compile_software=False, compile_gateware=False).build(
-        run=False, build_name="top")
-with open(f"{out}/litex.log", "w") as f:
-    f.write(log.getvalue())
+try:
+    with contextlib.redirect_stdout(log), contextlib.redirect_stderr(log):
+        platform, soc = t.make_soc(cfg)
+        Builder(soc, output_dir=out, compile_software=False, compile_gateware=False).build(
+            run=False, build_name="top")
+finally:
+    with open(f"{out}/litex.log", "w") as f:
+        f.write(log.getvalue())
 print(t.FLOW["device"], t.FLOW["package"], cfg.sys_hz)
 PY
 )
+[ -n "${sys_hz:-}" ] || { echo "board_fit: LiteX did not build $board; see $out/litex.log" >&2; exit 1; }
 gw=$out/gateware
 freq=$("$py" -c "print(round($sys_hz * $margin / 1e6, 3))")
 echo "board_fit: $board: $device $package, $sys_hz Hz x $margin = $freq MHz asked"
@@ -107,7 +110,7 @@ for s in $seeds; do
   if ! nice -n 19 nextpnr-ice40 "--$device" --package "$package" --json top.json --pcf top.pcf \
       --pre-pack top_pre_pack_fit.py --freq "$freq" --seed "$s" --timing-allow-fail "${pack[@]}" >"$log" 2>&1; then
     echo "board_fit: seed $s: nextpnr-ice40 failed (does not fit?); see $log"
-    grep -E 'ICESTORM_LC|ICESTORM_RAM|ERROR' "$log" | tail -n 3 | sed 's/^/board_fit:   /'
+    grep -E 'ICESTORM_LC|ICESTORM_RAM|ERROR' "$log" | tail -n 3 | cut -c1-160 | sed 's/^/board_fit:   /'
     fail=1
     continue
   fi
