@@ -509,6 +509,11 @@ module motion_soc #(
   logic [AXES-1:0]  neg_q, neg_d;
   logic [AXES*31-1:0] since_q, since_d;    // clocks since the last step, axis i at [i*31 +: 31]
   logic [AXES*31-1:0] period_q, period_d;  // clocks between the last two steps
+  // over_q[i] == (since > period) of axis i, kept without a magnitude compare:
+  // since counts up by one a clock (saturating) while period holds, so it
+  // passes period on the clock after it equals it (unless saturated there),
+  // and a step clears both sides (since 0, period since + 1 or held).
+  logic [AXES-1:0]  over_q, over_d;
   logic [1:0]       type_reg [6];
   logic [AXES-1:0]  rise;
   logic [31:0]      speed [AXES];
@@ -531,11 +536,23 @@ module motion_soc #(
       since_inc[i] = &since_q[i*31 +: 31] ? since_q[i*31 +: 31] : since_q[i*31 +: 31] + 31'd1;
       since_d[i*31 +: 31]  = rise[i] ? 31'd0 : since_inc[i];
       period_d[i*31 +: 31] = (rise[i] && seen_q[i]) ? since_inc[i] : period_q[i*31 +: 31];
+      over_d[i]   = !rise[i] && (over_q[i] || (since_q[i*31 +: 31] == period_q[i*31 +: 31] &&
+                                                   !(&since_q[i*31 +: 31])));
       speed[i]    = !seen_q[i] ? 32'd0
-                  : {neg_q[i], (since_q[i*31 +: 31] > period_q[i*31 +: 31]) ? since_q[i*31 +: 31]
-                                                                             : period_q[i*31 +: 31]};
+                  : {neg_q[i], over_q[i] ? since_q[i*31 +: 31] : period_q[i*31 +: 31]};
     end
   end
+
+`ifndef SYNTHESIS
+  // over_q stands for the compare since > period: simulation checks it.
+  always_ff @(posedge clk_i) begin
+    for (int i = 0; i < AXES; i++) begin
+      if (over_q[i] != (since_q[i*31 +: 31] > period_q[i*31 +: 31])) begin
+        $error("motion_soc: axis %0d: over_q %0b is not since > period", i, over_q[i]);
+      end
+    end
+  end
+`endif
 
   for (genvar i = 0; i < AXES; i++) begin : g_encode
     step_encode u_encode (
@@ -724,6 +741,7 @@ module motion_soc #(
       latch_time_q  <= '0;
       since_q       <= '0;
       period_q      <= '0;
+      over_q        <= '0;
       snap_pos_q    <= '0;
       snap_speed_q  <= '0;
       latch_pos_q   <= '0;
@@ -755,6 +773,7 @@ module motion_soc #(
       latch_time_q  <= latch_time_d;
       since_q       <= since_d;
       period_q      <= period_d;
+      over_q        <= over_d;
       snap_pos_q    <= snap_pos_d;
       snap_speed_q  <= snap_speed_d;
       latch_pos_q   <= latch_pos_d;
