@@ -85,6 +85,11 @@ hwinterp_synth_block(NAME motion_soc_wb_n3 TOP motion_soc_wb FILES motion_soc YO
 set(soc_profile PROFILE=1 SPD_W=48 TICK_W=10 LEN_W=10 PROF_LVL_W=16 MV_OPS_W=28)
 hwinterp_synth_block(NAME motion_soc_axil_prof_n3 TOP motion_soc_axil FILES motion_soc YOSYS yowasp
   VARIANT motion_top_n3 PARAMS FIFO_DEPTH=16 ${soc_profile})
+# ... and the Wishbone top with the profile at the same widths: the build for
+# the iCE40-HX8K breakout board (docs/soc.md, "The iCE40-HX8K breakout board:
+# the whole gateware": it does not fit yet).
+hwinterp_synth_block(NAME motion_soc_wb_prof_n3 TOP motion_soc_wb FILES motion_soc YOSYS yowasp
+  VARIANT motion_top_n3 PARAMS FIFO_DEPTH=16 ${soc_profile})
 # feed_profile: the jerk-limited feed profile (docs/profile.md) at the widths
 # the harness runs it (tb/lockstep/harness_profile.h; rtl/CMakeLists.txt
 # Verilates Vfeed_profile_f<W>_cc from this line, at every variant's FEED_W).

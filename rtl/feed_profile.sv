@@ -22,15 +22,17 @@
 // first, one a clock) computes, during the tick, the level and the speed the
 // boundary would give for hold_i low and for hold_i high, and the boundary
 // clock only chooses between two registers. The arithmetic that follows a
-// boundary (the distance R less this tick's travel, the ring word q * c) is
-// done by the same MAC at the start of the next tick; R is internal, so no
-// output sees the difference. The override's target (above) is a small
+// boundary (the distance R less this tick's travel, the product q * c_old
+// of the ring's level) is done by the same MAC at the start of the next
+// tick; R is internal, so no output sees the difference. The override's target (above) is a small
 // shift-add multiplier of its own (9 clocks, from the end of QC, when the
 // command of the next boundary is known), long done before GO reads it.
 // Per tick, in order (SEQ_CLOCKS clocks, checked
 // against 2^TICK_W below):
 //   R     ~R = ~rp + (q L) c_new   (R is held inverted: ~(a - b) = ~a + b)
-//   QC    q c_new, written to the ring word of the boundary just passed
+//   QC    q c_old, c_old the level of the boundary L ticks back (the ring
+//         word read at t = 2, after the level of the boundary just passed
+//         is written at t = 1)
 //   QL    q L
 //   X0    2 e (L - 1) + (c + e - 1)(c - e) [c > e] + c * 2 (1 + w)
 //   X1    X0 + c * 2 (L - w + [c >= e]) + 2 (L + 1)
@@ -42,7 +44,14 @@
 // more after the last bit let them ripple through), so no carry chain is
 // longer than about RW / 3. The last L levels live in a
 // block RAM (prim_ram_1r1w); words not written since reset read as 0 (a
-// high-water mark), as the HLS face's ring starts at 0.
+// high-water mark), as the HLS face's ring starts at 0. The ring holds the
+// levels c, not the products q c the HLS face keeps (ring_qc_): q changes
+// only at rest (busy_o low), and at rest every word written since reset
+// holds level 0 (no step of the level within the last L ticks and no move,
+// so the level came down to 0 more than L ticks ago; a shorter L reads a
+// subset of those words), so q c_old with the q in force equals the product
+// the HLS face stored. LVL_W + 2 bits a word instead of SPD_W + 3: 5
+// SB_RAM40_4K instead of 13 at LVL_W 16, LEN_W 10.
 module feed_profile #(
   parameter int FEED_W = 16,  // feed word fraction bits, as feed_accum (>= 1)
   parameter int SPD_W  = 48,  // speed fraction bits (FEED_W < SPD_W <= 62)
@@ -176,12 +185,18 @@ module feed_profile #(
                          OpF0 = 5'd10, OpGo = 5'd11, OpGo2 = 5'd12, OpV0a = 5'd13, OpV0b = 5'd14,
                          OpV1a = 5'd15, OpV1b = 5'd16;
 
-  // ---- the ring RAM: {dc up, dc down, q*c (SPD_W + 1 bits)} per tick ----
+  // ---- the ring RAM: {dc up, dc down, c} per tick ----
+  // Written at t = 1 (the level, its step and the ring position of the
+  // boundary just passed are registers by then), read at t = 2 (so with
+  // L = 1 the read gives the word just written): never a read and a write in
+  // one clock.
   logic              ram_we, ram_re;
-  logic [SPD_W+2:0]  ram_wdata, ram_rdata;
+  logic [LVL_W+1:0]  ram_wdata, ram_rdata;
   logic [PW-1:0]     p_full;
   assign p_full = {ph_hi_q, pm_q, pl_q};
-  prim_ram_1r1w #(.WIDTH(SPD_W + 3), .DEPTH(MAXLEN)) u_ring (
+  assign ram_we = t_q == TICK_W'(1);
+  assign ram_re = t_q == TICK_W'(2);
+  prim_ram_1r1w #(.WIDTH(LVL_W + 2), .DEPTH(MAXLEN), .SAME_WORD_RW(1'b0)) u_ring (
     .clk_i   (clk_i),
     .we_i    (ram_we),
     .waddr_i (idxb_q),
@@ -190,17 +205,19 @@ module feed_profile #(
     .raddr_i (idx_q),
     .rdata_o (ram_rdata)
   );
-  assign ram_wdata = {upb_q, dnb_q, p_full[VW:1]};
+  assign ram_wdata = {upb_q, dnb_q, c_q};
 
   // The word read, registered once more in the fabric (block RAM's clock to
-  // out is long); read at QL's capture, it is first used at GO2's, clocks later.
-  logic [SPD_W+2:0] rdq_q, rdq_d;
+  // out is long); read at t = 2, it is first used at QC's load, clocks later.
+  // q c_old is QC's product (qco_q), taken at QC's capture.
+  logic [LVL_W+1:0] rdq_q, rdq_d;
   logic rd_up, rd_dn;
-  logic [VW-1:0] qc_old;
+  logic [LVL_W-1:0] c_old;
+  logic [VW-1:0] qco_q, qco_d;
   assign rdq_d  = ram_rdata;
-  assign rd_up  = rvalid_q && rdq_q[SPD_W+2];
-  assign rd_dn  = rvalid_q && rdq_q[SPD_W+1];
-  assign qc_old = rvalid_q ? rdq_q[SPD_W:0] : '0;
+  assign rd_up  = rvalid_q && rdq_q[LVL_W+1];
+  assign rd_dn  = rvalid_q && rdq_q[LVL_W];
+  assign c_old  = rvalid_q ? rdq_q[LVL_W-1:0] : '0;
 
   // busy: moves queued, or moving (v != 0), or settling (a step of the
   // level within the last L ticks: quiet <= L). A register, busy_q, computed
@@ -302,7 +319,7 @@ module feed_profile #(
   assign lm1_d     = len_q - (LEN_W + 1)'(1);
   assign lp1_d     = len_q + (LEN_W + 1)'(1);
   assign cme_d     = c_q - end_p;
-  assign nqc_old = ~qc_old;
+  assign nqc_old = ~qco_q;
   logic [LVL_W:0]  c2;                         // 2 c
   logic [RW:0]     nrp1;                       // ~(2 rp) = 2 ~rp + 1
   assign c2      = {c_q, 1'b0};
@@ -328,7 +345,7 @@ module feed_profile #(
     lk = '0;
     unique case (lop)
       OpR:   begin la = curb_q ? PW'(ql_q) : '0; lb = XW'(c2); lp = PW'(nrp1); lk = 6'(LVL_W + 1); end
-      OpQc:  begin la = PW'(q_q);   lb = XW'(c2);                               lk = 6'(LVL_W + 1); end
+      OpQc:  begin la = PW'(q_q);   lb = XW'(c_old);                            lk = 6'(LVL_W + 1); end
       OpQl:  begin la = PW'(q_q);   lb = XW'(len_q);                            lk = 6'(LEN_W + 1); end
       OpEl:  begin la = PW'(end_p); lb = XW'({lm1_q, 1'b0});                      lk = 6'(LEN_W + 2); end
       OpBrk: begin la = PW'(cpe_q); lb = XW'(cme_q);          lp = p_full;       lk = 6'(LVL_W); end
@@ -397,8 +414,7 @@ module feed_profile #(
     vn1_d     = vn1_q;
     vn0nz_d   = vn0nz_q;
     vn1nz_d   = vn1nz_q;
-    ram_we    = 1'b0;
-    ram_re    = 1'b0;
+    qco_d     = qco_q;
     if (run_q) begin
       // A bit of B (the last two clocks, with B empty: the last carries only).
       pl_d      = sum_lo[PLW-1:0];
@@ -425,8 +441,8 @@ module feed_profile #(
     if (cap) begin
       unique case (ph_q)
         OpR:   nr_d = p_full[RW:1];
-        OpQc:  ram_we = 1'b1;
-        OpQl:  begin ql_d = p_full[QL_W-1:0]; ram_re = 1'b1; end
+        OpQc:  qco_d = p_full[VW-1:0];
+        OpQl:  ql_d = p_full[QL_W-1:0];
         OpCw:  x0_d = p_full[XW-1:0];
         OpF1:  fits1_d = nrp_q[RW-1] && !over_rw;
         OpF0:  fits0_d = nrp_q[RW-1] && !over_rw;
@@ -695,6 +711,7 @@ module feed_profile #(
       fits1_q    <= 1'b0;
       rvalid_q   <= 1'b0;
       rdq_q      <= '0;
+      qco_q      <= '0;
       ph_q       <= '0;  // OpIdle
       load_q     <= 1'b0;
       lop_q      <= '0;
@@ -771,6 +788,7 @@ module feed_profile #(
       fits1_q    <= fits1_d;
       rvalid_q   <= rvalid_d;
       rdq_q      <= rdq_d;
+      qco_q      <= qco_d;
       ph_q       <= ph_d;
       load_q     <= load_d;
       lop_q      <= lop_d;

@@ -139,7 +139,12 @@ module motion_soc #(
 
   localparam int PTR_W = $clog2(FIFO_DEPTH);
   localparam int LVL_W = $clog2(FIFO_DEPTH + 1);
-  // A FIFO entry: {at, timed, feed, ops, ccw, end, center, plane, delta, arc}.
+  // A FIFO entry: {at, timed, feed, ops, ccw, end, center, plane, delta, arc};
+  // with PROFILE = 1 without {at, timed} (ENTRY_W = E_TIMED): a timed push
+  // is refused there, so every entry's timed bit would be 0 (the head reads
+  // it as 0 from the bits above the RAM's word, and the apply-at compare
+  // folds away). 65 bits less: 16 SB_RAM40_4K instead of 20 at
+  // motion_top_n3's widths.
   localparam int E_ARC    = 0;
   localparam int E_DELTA  = E_ARC + 1;
   localparam int E_PLANE  = E_DELTA + AXES * ACC_W;
@@ -150,7 +155,8 @@ module motion_soc #(
   localparam int E_FEED   = E_OPS + OPS_W;
   localparam int E_TIMED  = E_FEED + FEED_W + 1;
   localparam int E_AT     = E_TIMED + 1;
-  localparam int ENTRY_W  = E_AT + 64;
+  localparam int FULL_W   = E_AT + 64;   // every field
+  localparam int ENTRY_W  = (PROFILE == 0) ? FULL_W : E_TIMED;
   // A move entry (the profile's FIFO): {max, end, target, ops}.
   localparam int M_OPS    = 0;
   localparam int M_TARGET = M_OPS + MV_OPS_W;
@@ -181,6 +187,7 @@ module motion_soc #(
   logic [63:0] ops64;
   logic [31:0] feed_w32, cmd_feed_w32;
   logic [31:0] step_len32, step_space32, dir_setup32, dir_hold32;
+  logic [FULL_W-1:0]  push_all;      // the entry with every field (the RAM takes ENTRY_W bits)
   /* verilator lint_on UNUSEDSIGNAL */
   logic [ENTRY_W-1:0] push_entry;
   logic [MV_W-1:0]    push_move;
@@ -211,19 +218,20 @@ module motion_soc #(
     dir_setup32  = sat32(hwif_out_i.dir_setup.value.value, TIM_W);
     dir_hold32   = sat32(hwif_out_i.dir_hold.value.value, TIM_W);
 
-    push_entry = '0;
-    push_entry[E_ARC] = hwif_out_i.cmd_flags.arc.value;
-    for (int i = 0; i < AXES; i++) push_entry[E_DELTA + i*ACC_W +: ACC_W] = delta64[i][ACC_W-1:0];
-    push_entry[E_PLANE +: 2] = hwif_out_i.cmd_flags.plane.value;
+    push_all = '0;
+    push_all[E_ARC] = hwif_out_i.cmd_flags.arc.value;
+    for (int i = 0; i < AXES; i++) push_all[E_DELTA + i*ACC_W +: ACC_W] = delta64[i][ACC_W-1:0];
+    push_all[E_PLANE +: 2] = hwif_out_i.cmd_flags.plane.value;
     for (int i = 0; i < 2; i++) begin
-      push_entry[E_CENTER + i*COORD_W +: COORD_W] = center64[i][COORD_W-1:0];
-      push_entry[E_END + i*COORD_W +: COORD_W]    = end64[i][COORD_W-1:0];
+      push_all[E_CENTER + i*COORD_W +: COORD_W] = center64[i][COORD_W-1:0];
+      push_all[E_END + i*COORD_W +: COORD_W]    = end64[i][COORD_W-1:0];
     end
-    push_entry[E_CCW] = hwif_out_i.cmd_flags.ccw.value;
-    push_entry[E_OPS +: OPS_W] = ops64[OPS_W-1:0];
-    push_entry[E_FEED +: FEED_W + 1] = cmd_feed_w32[FEED_W:0];
-    push_entry[E_TIMED] = hwif_out_i.cmd_flags.timed.value;
-    push_entry[E_AT +: 64] = {hwif_out_i.cmd_at.hi.value, hwif_out_i.cmd_at.lo.value};
+    push_all[E_CCW] = hwif_out_i.cmd_flags.ccw.value;
+    push_all[E_OPS +: OPS_W] = ops64[OPS_W-1:0];
+    push_all[E_FEED +: FEED_W + 1] = cmd_feed_w32[FEED_W:0];
+    push_all[E_TIMED] = hwif_out_i.cmd_flags.timed.value;
+    push_all[E_AT +: 64] = {hwif_out_i.cmd_at.hi.value, hwif_out_i.cmd_at.lo.value};
+    push_entry = push_all[ENTRY_W-1:0];
 
     push_move = '0;
     push_move[M_OPS +: MV_OPS_W]      = MV_OPS_W'(hwif_out_i.cmd_mv_ops.value.value);
@@ -289,6 +297,7 @@ module motion_soc #(
   logic                full;
   logic                re;
   logic [ENTRY_W-1:0]  head_entry;
+  logic [FULL_W-1:0]   head_all;  // head_entry, the fields PROFILE = 1 leaves out 0
   logic                head_due, head_late;
   logic                cmd_valid, cmd_ready, cmd_take;
   logic [63:0]         head_at;
@@ -317,9 +326,10 @@ module motion_soc #(
   assign push_full    = push && !push_refused && full;
   assign push_ok      = push && !push_refused && !full;
 
-  assign head_at   = head_entry[E_AT +: 64];
-  assign head_due  = !head_entry[E_TIMED] || time_q >= head_at;
-  assign head_late = head_entry[E_TIMED] && time_q > head_at;
+  assign head_all = FULL_W'(head_entry);
+  assign head_at   = head_all[E_AT +: 64];
+  assign head_due  = !head_all[E_TIMED] || time_q >= head_at;
+  assign head_late = head_all[E_TIMED] && time_q > head_at;
   assign stop_wait = stop_open_q && prof_busy;
   assign cmd_hold  = stop_wait && level_c <= level_m;
   assign cmd_valid = head_q && head_due && !abort && !cmd_hold;
@@ -499,6 +509,11 @@ module motion_soc #(
   logic [AXES-1:0]  neg_q, neg_d;
   logic [AXES*31-1:0] since_q, since_d;    // clocks since the last step, axis i at [i*31 +: 31]
   logic [AXES*31-1:0] period_q, period_d;  // clocks between the last two steps
+  // over_q[i] == (since > period) of axis i, kept without a magnitude compare:
+  // since counts up by one a clock (saturating) while period holds, so it
+  // passes period on the clock after it equals it (unless saturated there),
+  // and a step clears both sides (since 0, period since + 1 or held).
+  logic [AXES-1:0]  over_q, over_d;
   logic [1:0]       type_reg [6];
   logic [AXES-1:0]  rise;
   logic [31:0]      speed [AXES];
@@ -521,11 +536,23 @@ module motion_soc #(
       since_inc[i] = &since_q[i*31 +: 31] ? since_q[i*31 +: 31] : since_q[i*31 +: 31] + 31'd1;
       since_d[i*31 +: 31]  = rise[i] ? 31'd0 : since_inc[i];
       period_d[i*31 +: 31] = (rise[i] && seen_q[i]) ? since_inc[i] : period_q[i*31 +: 31];
+      over_d[i]   = !rise[i] && (over_q[i] || (since_q[i*31 +: 31] == period_q[i*31 +: 31] &&
+                                                   !(&since_q[i*31 +: 31])));
       speed[i]    = !seen_q[i] ? 32'd0
-                  : {neg_q[i], (since_q[i*31 +: 31] > period_q[i*31 +: 31]) ? since_q[i*31 +: 31]
-                                                                             : period_q[i*31 +: 31]};
+                  : {neg_q[i], over_q[i] ? since_q[i*31 +: 31] : period_q[i*31 +: 31]};
     end
   end
+
+`ifndef SYNTHESIS
+  // over_q stands for the compare since > period: simulation checks it.
+  always_ff @(posedge clk_i) begin
+    for (int i = 0; i < AXES; i++) begin
+      if (over_q[i] != (since_q[i*31 +: 31] > period_q[i*31 +: 31])) begin
+        $error("motion_soc: axis %0d: over_q %0b is not since > period", i, over_q[i]);
+      end
+    end
+  end
+`endif
 
   for (genvar i = 0; i < AXES; i++) begin : g_encode
     step_encode u_encode (
@@ -714,6 +741,7 @@ module motion_soc #(
       latch_time_q  <= '0;
       since_q       <= '0;
       period_q      <= '0;
+      over_q        <= '0;
       snap_pos_q    <= '0;
       snap_speed_q  <= '0;
       latch_pos_q   <= '0;
@@ -745,6 +773,7 @@ module motion_soc #(
       latch_time_q  <= latch_time_d;
       since_q       <= since_d;
       period_q      <= period_d;
+      over_q        <= over_d;
       snap_pos_q    <= snap_pos_d;
       snap_speed_q  <= snap_speed_d;
       latch_pos_q   <= latch_pos_d;

@@ -17,7 +17,8 @@
 //   0: the user never does it (a FIFO whose read and write pointers differ
 //      whenever both ports act); the RAM is used as it is (Yosys's
 //      no_rw_check), and simulation stops with an error if it happens (a
-//      formal proof of the user, with FORMAL defined, asserts it instead).
+//      formal proof of the user, with FORMAL defined, asserts it instead:
+//      rtl/formal/etherbone_engine_props.sv, feed_profile_props.sv).
 module prim_ram_1r1w #(
   parameter int WIDTH = 32,          // bits a word (>= 1)
   parameter int DEPTH = 16,          // words (>= 2)
@@ -55,7 +56,7 @@ module prim_ram_1r1w #(
       if (re_i) rdata_q <= mem_q[raddr_i];
     end
 `ifdef FORMAL
-    // A proof of the user (rtl/formal/etherbone_engine_props.sv) checks it.
+    // A proof of the user (etherbone_engine, feed_profile) checks it.
     always_comb begin
       if (we_i && re_i) a_same_word: assert(waddr_i != raddr_i);
     end

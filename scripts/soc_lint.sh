@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Lints motion_soc (rtl/motion_soc.f) behind both buses: Verilator 5
 # (`--lint-only -Wall`, the generated register blocks' own unused-signal
-# warnings waived by rtl/regs/lint.vlt) at the default parameters and at two
-# other builds; a bad parameter must stop both Verilator and Yosys with
+# warnings waived by rtl/regs/lint.vlt) at the default parameters, at two
+# other builds and with the feed profile (PROFILE=1, motion_top_n3's widths); a bad parameter must stop both Verilator and Yosys with
 # motion_soc's message; Yosys (the venv's YoWASP Yosys, which reads
 # PeakRDL-regblock's packed structs; Debian's 0.23 does not) elaborates both
 # tops. The host link's blocks (rtl/link/) the same way, below. Exit 0 when
@@ -18,6 +18,7 @@ builds=(
   ""
   "-GAXES=6 -GACC_W=40 -GCOORD_W=36 -GOPS_W=30 -GPOS_W=48 -GFIFO_DEPTH=5"
   "-GAXES=4 -GACC_W=16 -GCOORD_W=12 -GOPS_W=12 -GPOS_W=20 -GTIM_W=8 -GFEED_W=8 -GFIFO_DEPTH=512"
+  "-GPROFILE=1 -GFEED_W=24"
 )
 for top in motion_soc_axil motion_soc_wb; do
   for b in "${builds[@]}"; do

@@ -22,7 +22,8 @@ struct Faces {
   VerilatedContext context;
   Vfeed_profile_cc rtl;
   Profile hls;
-  explicit Faces(uint64_t seed) : rtl((context.randSeed(static_cast<int>(seed)), &context)) {
+  explicit Faces(uint64_t seed)
+      : rtl((context.randReset(2), context.randSeed(static_cast<int>(seed)), &context)) {
     hls.reset();
     // Reset over a rising edge (the asynchronous reset wins at the edge).
     rtl.rst_ni = 0;

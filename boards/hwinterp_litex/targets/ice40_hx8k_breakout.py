@@ -46,7 +46,9 @@ def make_soc(cfg, **_):
         "probe": platform.request("probe"),
         "led": led,
     }
-    soc = BoardSoC(platform, cfg, crg, pins, ident="")  # no identifier ROM: the fit is tight
+    # No identifier ROM and no SoC controller (its reset, scratch and
+    # bus-error CSRs): the fit is tight.
+    soc = BoardSoC(platform, cfg, crg, pins, ident="", with_ctrl=False)
     soc.comb += platform.request("user_led", 0).eq(led)
     add_uart_link(soc, platform.request("serial"), cfg.baud)
     return platform, soc
