@@ -70,26 +70,41 @@ class MotionSoC(LiteXModule):
         self.estop = Signal()
         self.irq = Signal()
 
-        # motion_soc_wb answers (ack or err, and the read data) in the clock
-        # of the request. LiteX's SoC registers its bus decoder's slave select
-        # (SoCBusHandler interconnect_register=True: wishbone.Decoder takes a
-        # slave's dat_r with the select of the clock before), so an answer in
-        # the request's own clock would reach the master masked. The request
-        # is therefore given to motion_soc_wb for one clock and its answer
-        # registered and returned the clock after: two clocks an access.
-        req = Signal()  # the access happens in this clock
+        # An access takes three clocks, each stage from a flip-flop:
+        # 1. the master's request (address, data, select, write) is latched;
+        # 2. motion_soc_wb gets it from those registers for one clock and
+        #    answers (ack or err, and the read data) in that clock;
+        # 3. the answer, registered, is on the bus.
+        # Registering the request keeps LiteX's bus (on the Colorlight: the
+        # Etherbone record FIFO's block RAM through the record sender and the
+        # decoder) out of motion_soc_wb's request-to-core-enable logic: in one
+        # clock the two made the board's critical path (42.6-43.3 MHz at
+        # 50 MHz, docs/synthesis.md). Registering the answer is needed anyway:
+        # LiteX's SoC registers its decoder's slave select
+        # (interconnect_register=True: wishbone.Decoder takes a slave's dat_r
+        # with the select of the clock before), so an answer in the request's
+        # own clock would reach the master masked. A request the master drops
+        # before its ack (a classic-cycle master does not) still happens.
+        take = Signal()  # the request is latched in this clock
+        req = Signal()  # motion_soc_wb's access happens in this clock
         answer = Signal()  # the registered answer is on the bus
+        we_q, sel_q = Signal(), Signal(4)
+        adr_q = Signal(ADR_BITS)
+        dat_w_q = Signal(32)
         ack, err, stall = Signal(), Signal(), Signal()
         dat = Signal(32)
         ack_q, err_q = Signal(), Signal()
         dat_q = Signal(32)
         self.comb += [
-            req.eq(self.bus.cyc & self.bus.stb & ~answer),
+            take.eq(self.bus.cyc & self.bus.stb & ~req & ~answer),
             self.bus.ack.eq(answer & ack_q),
             self.bus.err.eq(answer & err_q),
             self.bus.dat_r.eq(dat_q),
         ]
         self.sync += [
+            req.eq(take),
+            If(take, we_q.eq(self.bus.we), sel_q.eq(self.bus.sel),
+               adr_q.eq(self.bus.adr[:ADR_BITS]), dat_w_q.eq(self.bus.dat_w)),
             answer.eq(req),
             If(req, ack_q.eq(ack), err_q.eq(err), dat_q.eq(dat)),
         ]
@@ -100,12 +115,12 @@ class MotionSoC(LiteXModule):
             p_CLK_HZ=_param(self.clk_hz),
             i_clk_i=ClockSignal("sys"),
             i_rst_ni=~ResetSignal("sys"),
-            i_wb_cyc_i=self.bus.cyc,
+            i_wb_cyc_i=req,
             i_wb_stb_i=req,
-            i_wb_we_i=self.bus.we,
-            i_wb_adr_i=self.bus.adr[:ADR_BITS],
-            i_wb_dat_i=self.bus.dat_w,
-            i_wb_sel_i=self.bus.sel,
+            i_wb_we_i=we_q,
+            i_wb_adr_i=adr_q,
+            i_wb_dat_i=dat_w_q,
+            i_wb_sel_i=sel_q,
             o_wb_dat_o=dat,
             o_wb_ack_o=ack,
             o_wb_err_o=err,
