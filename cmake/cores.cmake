@@ -116,8 +116,9 @@ hwinterp_board(NAME ice40_hx8k_breakout VARIANT motion_top_n3 LINK uart SYS_HZ 1
 # Simulated builds at slower clocks besides each board's own (hwinterp
 # board-sim --clock-hz): whole programs in the tests' time. A UART at 8
 # clocks a bit, the bridge's least. And one without the feed profile (FEED
-# drives the feed, as in a board built with PROFILE = 0).
+# drives the feed, as in a board built with PROFILE = 0) for each link.
 hwinterp_board_sim(BOARD colorlight_5a_75b SYS_HZ 1000000)
 hwinterp_board_sim(BOARD colorlight_5a_75b SYS_HZ 1000000 NO_PROFILE)
 hwinterp_board_sim(BOARD tang_nano_20k SYS_HZ 2000000 BAUD 250000)
+hwinterp_board_sim(BOARD tang_nano_20k SYS_HZ 2000000 BAUD 250000 NO_PROFILE)
 hwinterp_finish_variants()

@@ -665,6 +665,29 @@ def r_boards(_):
                                                 source(d)]
 
 
+def r_board_link(_):
+    """docs/boards.md: the host link streaming moves into the simulated boards
+    (scripts/board_link_bench.py)."""
+    d = load("board_link.json")
+    rows = []
+    for c in d["cases"]:
+        tc = c["transport_counts"]
+        link = "Etherbone/UDP" if c["link"] == "etherbone" else "UART %s baud" % grp(c["baud"])
+        wire = ("%s a command: %s/s on the wire" % (
+            "%.0f bytes" % c["bytes_per_command"], grp(round(c["wire_commands_per_s"])))
+            if c.get("wire_commands_per_s") else "%.1f commands a packet" % c["commands_per_packet"])
+        rows.append(["`%s` at %g MHz%s" % (c["board"], c["sys_hz"] / 1e6,
+                                           "" if c["profile"] else ", no profile"),
+                     link, "%s of %g ms" % (grp(c["moves"]), c["move_s"] * 1e3),
+                     "%.4f / %.4f" % (c["machine_time_s"], c["planned_time_s"]),
+                     grp(round(c["commands_per_machine_s"])), grp(c["packets"]),
+                     c["full_polls"], grp(tc["bytes_sent"]) + " / " + grp(tc["bytes_received"]),
+                     wire, "yes" if c["passed"] else "**no**"])
+    return table(["board", "link", "moves", "machine time / planned (s)",
+                  "commands a second of machine time", "packets", "polls with the FIFO full",
+                  "bytes to / from the board", "link", "passed"], rows) + ["", source(d)]
+
+
 RENDERERS = {
     "folder-graph": ("tb", r_folder_graph),
     "synth-paths": ("docs/synth.json", r_synth_paths),
@@ -698,6 +721,7 @@ RENDERERS = {
     "synth-blocks": ("docs/data/synth_blocks.json", r_synth_blocks),
     "link-size": ("docs/data/link_size.json", r_link_size),
     "boards": ("docs/data/boards.json", r_boards),
+    "board-link": ("docs/data/board_link.json", r_board_link),
     "soc-timing": ("docs/data/soc.json", r_soc_timing),
     "soc-tests": ("docs/data/soc.json", r_soc_tests),
     "profile-ruckig": ("docs/data/profile_ruckig.json", r_profile_ruckig),
