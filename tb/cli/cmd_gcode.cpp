@@ -3,13 +3,13 @@
 // contour error and the end points). This file holds the argument handling:
 // the options, their checks, the output files and the plot.
 #include <cstdio>
-#include <cstdlib>
 #include <fstream>
 #include <iostream>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "tb/base/spawn.h"
 #include "tb/base/text_table.h"
 #include "tb/cli/subcommand.h"
 #include "tb/gcode/part_program.h"
@@ -20,13 +20,18 @@ namespace hwinterp::cli {
 
 namespace {
 
-// Runs a plot script with the project's Python; on success removes its data
-// files and names the PNG, else says the command that failed.
-bool plot(const std::string& script, const std::string& arguments, const std::string& png,
-          const std::vector<std::string>& data) {
-  const std::string cmd = "'" HWINTERP_PYTHON "' '" + script + "' " + arguments + " > /dev/null";
-  if (std::system(cmd.c_str()) != 0) {
-    std::cout << "plot: failed (" << cmd << ")\n";
+// Runs a plot script with the project's Python, an argument vector and no
+// shell (any file name is an argument, never a command); on success removes
+// its data files and names the PNG, else says the command that failed.
+bool plot(const std::string& script, const std::vector<std::string>& arguments,
+          const std::string& png, const std::vector<std::string>& data) {
+  std::vector<std::string> argv{HWINTERP_PYTHON, script};
+  argv.insert(argv.end(), arguments.begin(), arguments.end());
+  std::string why;
+  const int rc = spawn_and_wait(argv, /*quiet=*/true, &why);
+  if (rc != 0) {
+    std::cout << "plot: failed (" << quoted_command(argv) << ": "
+              << (rc < 0 ? why : "exit " + std::to_string(rc)) << ")\n";
     return false;
   }
   std::cout << "plot: " << png << "\n";
@@ -223,7 +228,7 @@ int run_gcode(int argc, char** argv, int first) {
     points_csv->close();
     if (!*points_csv) throw UsageError("--plot: error writing '" + points_path + "'");
     ok = plot(HWINTERP_SCRIPTS_DIR "/plot_gcode.py",
-              "'" + points_path + "' -o '" + args.str("plot") + "' --title '" + setup.program + "'",
+              {"--out=" + args.str("plot"), "--title=" + setup.program, "--", points_path},
               args.str("plot"), {points_path}) &&
          ok;
   }
@@ -233,8 +238,8 @@ int run_gcode(int argc, char** argv, int first) {
       throw UsageError("--plot-kinematics: error writing '" + kin_png + ".csv'");
     std::ofstream(kin_png + ".json") << gcode::kinematics_units_json(setup, run).dump(1) << "\n";
     ok = plot(HWINTERP_SCRIPTS_DIR "/plot_kinematics.py",
-              "'" + kin_png + ".csv' '" + kin_png + ".json' -o '" + kin_png + "' --title '" +
-                  setup.program + "'",
+              {"--out=" + kin_png, "--title=" + setup.program, "--", kin_png + ".csv",
+               kin_png + ".json"},
               kin_png, {kin_png + ".csv", kin_png + ".json"}) &&
          ok;
   }

@@ -129,6 +129,38 @@ TEST(GcodeCli, PlotWritesAPng) {
   EXPECT_TRUE(slurp(dir + "/path.png.points.csv").empty());
 }
 
+// A file name is an argument to the plot scripts, never a command: programs
+// and PNGs named with quotes, semicolons, spaces, $(...) and a newline plot
+// as any other, and nothing they spell runs (issue 38: `it's;touch
+// PWNED;'.ngc` with --plot ran `touch PWNED` through a shell).
+TEST(GcodeCli, PlotFileNamesAreNeverRunAsCommands) {
+  const std::string dir = scratch_dir("gcode_plot_names");
+  const auto sh = [](const std::string& s) {  // quoted for run_hwinterp's shell
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+  };
+  const std::string program = slurp(kData + "incremental.ngc");
+  const std::vector<std::string> names = {"it's;touch PWNED1;'", "bob's part", "$(touch PWNED2)",
+                                          "`touch PWNED3`",      "new\nline",  "-dash"};
+  for (size_t i = 0; i < names.size(); ++i) {
+    const std::string ngc = dir + "/" + names[i] + ".ngc";
+    std::ofstream(ngc) << program;
+    const std::string png = dir + "/" + names[i] + ";touch PWNED" + std::to_string(i) + ".png";
+    const std::string kin = dir + "/k" + names[i] + ".png";
+    const CliResult r = run_hwinterp("gcode " + sh(ngc) + " --mode direct --progress 0 --plot " +
+                                     sh(png) + " --plot-kinematics " + sh(kin));
+    ASSERT_EQ(r.code, 0) << names[i] << ": " << r.out << r.err;
+    EXPECT_EQ(slurp(png).substr(1, 3), "PNG") << names[i] << ": " << r.out;
+    EXPECT_EQ(slurp(kin).substr(1, 3), "PNG") << names[i] << ": " << r.out;
+  }
+  for (int k = 0; k < 6; ++k)
+    for (const std::string& where : {std::string("."), dir}) {
+      const std::string f = where + "/PWNED" + std::to_string(k);
+      EXPECT_NE(access(f.c_str(), F_OK), 0) << f << " exists: a file name ran as a command";
+    }
+}
+
 // --plot-kinematics: speed, acceleration and jerk over time, from the
 // estimator's windows, with the machine's limits; its data files go.
 TEST(GcodeCli, PlotKinematicsWritesAPng) {
