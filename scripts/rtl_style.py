@@ -17,7 +17,9 @@ outside the block (always_comb or assign), and the block holds no enable, no
 arithmetic and no other branch. One exception: a RAM primitive
 (rtl/prim_ram_*.sv) writes its words and its read register in a block clocked
 by clk_i alone (block RAM has no reset; Yosys infers it only so), every
-target still named _q. Exit 1 with one line per offence
+target still named _q. And a simulation checker: an always_ff clocked by clk_i
+alone inside `ifndef SYNTHESIS`, assigning nothing (it only reports, with
+$error), is no register and is left alone. Exit 1 with one line per offence
 (file:line: what), 0 when every block keeps the rule.
 """
 import os
@@ -62,6 +64,20 @@ def block_end(code, start):
         i = t.end()
 
 
+def in_sim_only(code, pos):
+    """Whether pos lies inside an `ifndef SYNTHESIS ... `endif (or `else)."""
+    depth_open = []
+    for t in re.finditer(r"`(ifndef|ifdef|else|endif)\b\s*(\w*)", code[:pos]):
+        kind, name = t.group(1), t.group(2)
+        if kind in ("ifndef", "ifdef"):
+            depth_open.append(kind == "ifndef" and name == "SYNTHESIS")
+        elif kind == "else" and depth_open:
+            depth_open[-1] = False
+        elif kind == "endif" and depth_open:
+            depth_open.pop()
+    return bool(depth_open) and depth_open[-1]
+
+
 def enum_members(code):
     """Names of the members of every `typedef enum ... { ... }` in code (constants too)."""
     names = set()
@@ -83,6 +99,10 @@ def check(path):
         where = f"{os.path.relpath(path, ROOT)}:{line}"
         head = HEAD.match(code, m.start())
         ram = RAM_HEAD.match(code, m.start())
+        if ram and in_sim_only(code, m.start()):
+            body = code[ram.end():block_end(code, ram.end())]
+            if not RAM_NBA.search(body):
+                continue  # a checker: reports, assigns nothing
         if ram and os.path.basename(path).startswith("prim_ram_"):
             body = code[ram.end():block_end(code, ram.end())]
             for lhs, _ in RAM_NBA.findall(body):
