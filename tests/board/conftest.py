@@ -27,7 +27,8 @@ def hwinterp_exe():
 class BoardSim:
     """`hwinterp board-sim` in the background: start, its URI, stop, its report."""
 
-    def __init__(self, tmp, board, clock_hz=None, faults=None, seed=1, no_profile=False):
+    def __init__(self, tmp, board, clock_hz=None, faults=None, seed=1, no_profile=False,
+                 max_clocks=None):
         self.tmp = tmp
         self.uri_file = os.path.join(tmp, f"{board}.uri")
         self.json = os.path.join(tmp, f"{board}.sim.json")
@@ -42,6 +43,8 @@ class BoardSim:
             cmd += ["--faults", faults]
         if no_profile:
             cmd += ["--no-profile"]
+        if max_clocks:
+            cmd += ["--max-clocks", str(max_clocks)]
         self.log = open(os.path.join(tmp, f"{board}.sim.log"), "w")
         self.proc = subprocess.Popen(cmd, stdout=self.log, stderr=subprocess.STDOUT)
         deadline = time.time() + 30

@@ -22,7 +22,10 @@ def test_host_killed_mid_move_the_board_stops(tmp_path, board_sim):
     with open(mfile) as f:
         machine = json.load(f)
     hz = machine["clock_hz"]
-    sim = board_sim("colorlight_5a_75b", clock_hz=hz)
+    # The board runs 4 s of board time, then stops by itself: the checks
+    # below count board clocks, not wall time (a loaded machine simulates
+    # slower).
+    sim = board_sim("colorlight_5a_75b", clock_hz=hz, max_clocks=4 * hz)
     wd_ms = 20.0
     env = dict(os.environ, PYTHONPATH=os.path.join(ROOT, "sw", "host"), HWINTERP=hwinterp_exe())
     proc = subprocess.Popen([sys.executable, "-m", "hwinterp_host", "run", program, "--machine",
@@ -38,8 +41,8 @@ def test_host_killed_mid_move_the_board_stops(tmp_path, board_sim):
     time.sleep(0.5)
     proc.send_signal(signal.SIGKILL)
     proc.wait()
-    # Long enough in board time for the bite, the stop and well after it.
-    time.sleep(3.0)
+    # The board goes on to its 4 s: the bite, the stop and well after it.
+    sim.proc.wait(timeout=600)
     assert sim.stop() == 0, sim.report
     r = sim.report
     assert r["timing_violations"] == 0
