@@ -17,7 +17,7 @@ from hwinterp_host.transport import (SerialTransport, SerialUri, UdpTransport, U
 
 
 @pytest.mark.parametrize("text,want", [
-    ("udp:192.168.1.50", UdpUri("192.168.1.50", 1234)),
+    ("udp:127.0.0.1", UdpUri("127.0.0.1", 1234)),
     ("udp:board.local:4321", UdpUri("board.local", 4321)),
     ("udp:[::1]:99", UdpUri("::1", 99)),
     ("udp:[fe80::1]", UdpUri("fe80::1", 1234)),
@@ -31,7 +31,7 @@ def test_good_uris(text, want):
 
 
 @pytest.mark.parametrize("text,why", [
-    ("192.168.1.50", "no scheme"),
+    ("127.0.0.1", "no scheme"),
     ("tcp:host:1", "unknown scheme 'tcp'"),
     ("udp:", "no host"),
     ("udp::1234", "no host"),
