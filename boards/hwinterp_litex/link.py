@@ -202,6 +202,18 @@ def add_etherbone_link(soc, phy, mac_address=0x10E2D5000000, ip_address="192.168
     dropper = EthFrameDropper(eth_phy_description(32), depth=dropper_depth)
     rx.dropper = dropper
     rx.pipeline.insert(len(rx.pipeline) - 1, dropper)
+    # Registered valid and ready (stream.Buffer) where the MAC meets the
+    # depacketizers and the packetizers: LiteEth's stream stages pass ready
+    # through their logic, so without the cuts one combinational path ran
+    # from the transmit CDC FIFO's pointers through every transmit and
+    # receive state machine (IP, UDP, Etherbone's arbiter, UDP, IP, ARP,
+    # MAC) into the dropper's read address: the Colorlight's critical path
+    # at 50.44 MHz (docs/boards.md). Two clocks more a frame each way.
+    rx.cut = stream.Buffer(eth_phy_description(32), pipe_valid=True, pipe_ready=True)
+    rx.pipeline.insert(len(rx.pipeline) - 1, rx.cut)
+    tx = ethcore.mac.core.tx_datapath
+    tx.cut = stream.Buffer(eth_phy_description(32), pipe_valid=True, pipe_ready=True)
+    tx.pipeline.insert(1, tx.cut)
     soc.ethcore = ethcore
     soc.etherbone = LiteEthEtherbone(ethcore.udp, udp_port, buffer_depth=buffer_depth)
     _fix_record_receiver(soc.etherbone.record.receiver)
