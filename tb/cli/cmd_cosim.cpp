@@ -110,14 +110,25 @@ int run_cosim(int argc, char** argv, int first) {
     options.seed = args.given("seed") ? args.seed("seed") : std::random_device{}();
   options.faults = parse_injection(args);
   trace_from_args(args, options);
-  if (args.given("dump-frames")) options.frames_path = args.str("dump-frames");
-  if (args.given("path-csv")) options.path_csv = args.str("path-csv");
-  if (args.given("step-times")) options.step_times_path = args.str("step-times");
   if (args.given("abort-at"))
     options.abort_at = static_cast<uint64_t>(args.integer("abort-at", 1, INT64_MAX));
 
-  // Every output can be written, or nothing runs.
-  check_outputs_writable(args, {"vcd", "fst", "path-csv", "step-times", "dump-frames"});
+  // Every output can be written and is neither the job file nor another
+  // output, or nothing runs; each is put in place when the run completes.
+  stage_outputs(args, {"vcd", "fst", "path-csv", "step-times", "dump-frames"}, {"job"});
+  if (!options.trace_path.empty())
+    options.trace_path = output_path(args.given("vcd") ? "vcd" : "fst");
+  if (args.given("dump-frames")) {
+    options.frames_path = output_path("dump-frames");
+    const std::string tb_path = args.str("dump-frames") + ".sv";
+    try {
+      options.frames_testbench_path = outputs().stage("--dump-frames's testbench", tb_path);
+    } catch (const std::exception& e) {
+      throw UsageError(std::string("--dump-frames: ") + e.what());
+    }
+  }
+  if (args.given("path-csv")) options.path_csv = output_path("path-csv");
+  if (args.given("step-times")) options.step_times_path = output_path("step-times");
   // Validates the stimulus and opens every output file before the run.
   const std::unique_ptr<tb::BenchRun> run = variant.from_args(args, options);
   std::cout << "hwinterp cosim: " << core->name << " (" << variant.spec.variant << "), mode "
@@ -143,7 +154,8 @@ int run_cosim(int argc, char** argv, int first) {
   if (args.given("abort-at") && report["abort"].is_null())
     std::cout << "note: --abort-at " << args.str("abort-at") << " is past the run's "
               << run->cycles() << " clocks: no abort happened\n";
-  if (!options.trace_path.empty()) std::cout << "trace: " << options.trace_path << "\n";
+  if (!options.trace_path.empty())
+    std::cout << "trace: " << args.str(args.given("vcd") ? "vcd" : "fst") << "\n";
   std::cout << (ok ? "PASS" : "FAIL") << "\n";
   maybe_write_json(args, report);
   return ok ? kExitOk : kExitCheckFailed;

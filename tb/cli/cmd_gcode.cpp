@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "models/feed_profile_model.h"
 #include "tb/base/spawn.h"
 #include "tb/base/text_table.h"
 #include "tb/cli/subcommand.h"
@@ -21,10 +22,11 @@ namespace hwinterp::cli {
 namespace {
 
 // Runs a plot script with the project's Python, an argument vector and no
-// shell (any file name is an argument, never a command); on success removes
-// its data files and names the PNG, else says the command that failed.
-bool plot(const std::string& script, const std::vector<std::string>& arguments,
-          const std::string& png, const std::vector<std::string>& data) {
+// shell (any file name is an argument, never a command); on success names
+// the PNG, else says the command that failed and discards the output
+// `option` (an existing PNG is left as it was).
+bool plot(const std::string& script, const std::vector<std::string>& arguments, const char* option,
+          const std::string& png) {
   std::vector<std::string> argv{HWINTERP_PYTHON, script};
   argv.insert(argv.end(), arguments.begin(), arguments.end());
   std::string why;
@@ -32,11 +34,43 @@ bool plot(const std::string& script, const std::vector<std::string>& arguments,
   if (rc != 0) {
     std::cout << "plot: failed (" << quoted_command(argv) << ": "
               << (rc < 0 ? why : "exit " + std::to_string(rc)) << ")\n";
+    outputs().discard(std::string("--") + option);
     return false;
   }
   std::cout << "plot: " << png << "\n";
-  for (const std::string& f : data) std::remove(f.c_str());
   return true;
+}
+
+// The feed hold and the 0 % spans of the override stop the machine for
+// their length, clock by clock: each, and their sum, within `max_clocks` at
+// the machine's clock, and every time they name within the clock counter,
+// or a UsageError naming the value (a hold of years would simulate for
+// years; one of 1e300 s would overflow the count).
+void check_pauses(const gcode::PartProgramSetup& setup, double max_clocks) {
+  if (!(max_clocks >= 1 && max_clocks <= 1.8e19))
+    throw UsageError("--max-clocks: " + fmt("%g", max_clocks) + " is outside 1..1.8e19");
+  const double hz = static_cast<double>(setup.machine.clock_hz);
+  const auto clocks = [&](double s) {
+    return fmt("%.3g", s * hz) + " clocks at " + fmt("%g", hz) + " Hz";
+  };
+  const auto beyond = [&](const std::string& what, double s) {
+    if (!(s * hz <= max_clocks))
+      throw UsageError(what + " " + fmt("%g", s) + " s is " + clocks(s) + ", beyond --max-clocks " +
+                       fmt("%g", max_clocks) + " (give a larger --max-clocks to simulate it)");
+  };
+  double paused = 0;
+  if (setup.hold_at_s >= 0) {
+    beyond("--feed-hold AT:", setup.hold_at_s);
+    beyond("--feed-hold FOR:", setup.hold_for_s);
+    paused += setup.hold_for_s;
+  }
+  const auto& o = setup.feed_override;
+  for (size_t i = 0; i < o.size(); ++i) {
+    beyond("--feed-override AT:", o[i].at_s);
+    if (models::override_word(o[i].percent) == 0 && i + 1 < o.size())
+      paused += o[i + 1].at_s - o[i].at_s;
+  }
+  beyond("the feed hold and the 0 % override spans stop the machine for", paused);
 }
 
 int run_gcode(int argc, char** argv, int first) {
@@ -105,7 +139,11 @@ int run_gcode(int argc, char** argv, int first) {
       .option("vcd", "FILE", "VCD trace of the run")
       .option("fst", "FILE", "FST trace of the run")
       .option("trace-window", "N", "keep only the last N clocks in the trace")
-      .option("progress", "N", "progress line every N clocks (0: none)", "5000000");
+      .option("progress", "N", "progress line every N clocks (0: none)", "5000000")
+      .option("max-clocks", "N",
+              "the ceiling on the clocks a feed hold or a 0 % override may add to the run: "
+              "one beyond it exits 2 before anything runs",
+              "1e11");
 
   // The program: the first argument, unless --canon names it.
   gcode::PartProgramSetup setup;
@@ -161,6 +199,7 @@ int run_gcode(int argc, char** argv, int first) {
     if (setup.machine.profile == gcode::ProfileKind::kOff)
       throw UsageError("--feed-override: the override is the feed profile's; the profile is off");
   }
+  check_pauses(setup, args.real("max-clocks"));
   if (!setup.bus.empty() && setup.machine.profile != gcode::ProfileKind::kOff &&
       (args.given("feed-hold") || args.given("feed-override")))
     throw UsageError(std::string("--bus ") + setup.bus +
@@ -180,30 +219,40 @@ int run_gcode(int argc, char** argv, int first) {
       if (args.given(o))
         throw UsageError(std::string("--plan-only: --") + o +
                          " needs the lockstep run; --plan-only writes --soc-writes only");
-    check_outputs_writable(args, {"soc-writes"});
-    setup.soc_writes_path = args.str("soc-writes");
+    stage_outputs(args, {"soc-writes"}, {"machine"}, {setup.program}, "the program");
+    setup.soc_writes_path = output_path("soc-writes");
     gcode::plan_soc_writes(setup);
     std::cout << "hwinterp gcode: " << setup.program << ": wrote " << setup.soc_writes_path << " ("
               << variant.variant << ")\n";
     return kExitOk;
   }
 
-  // Every output can be written, or nothing runs.
+  // Every output can be written and is neither an input nor another output,
+  // or nothing runs; each is written beside its file and put in place when
+  // the run completes (tb/report/output_path.h).
   trace_from_args(args, setup.bench);
   setup.bench.progress_every = static_cast<uint64_t>(args.integer("progress", 0, INT64_MAX));
-  check_outputs_writable(
-      args, {"moves-csv", "step-times", "plot", "plot-kinematics", "vcd", "fst", "soc-writes"});
-  if (args.given("step-times")) setup.bench.step_times_path = args.str("step-times");
-  if (args.given("soc-writes")) setup.soc_writes_path = args.str("soc-writes");
+  stage_outputs(args,
+                {"moves-csv", "step-times", "plot", "plot-kinematics", "vcd", "fst", "soc-writes"},
+                {"machine"}, {setup.program}, "the program");
+  if (!setup.bench.trace_path.empty())
+    setup.bench.trace_path = output_path(args.given("vcd") ? "vcd" : "fst");
+  if (args.given("step-times")) setup.bench.step_times_path = output_path("step-times");
+  if (args.given("soc-writes")) setup.soc_writes_path = output_path("soc-writes");
   std::unique_ptr<std::ofstream> moves_csv, points_csv;
-  if (args.given("moves-csv")) moves_csv = std::make_unique<std::ofstream>(args.str("moves-csv"));
-  const std::string points_path = args.given("plot") ? args.str("plot") + ".points.csv" : "";
+  if (args.given("moves-csv"))
+    moves_csv = std::make_unique<std::ofstream>(output_path("moves-csv"));
+  // The plots' data: scratch files beside the PNG, removed at the end.
+  const std::string points_path =
+      args.given("plot") ? outputs().scratch(args.str("plot") + ".points.csv") : "";
   if (!points_path.empty()) points_csv = std::make_unique<std::ofstream>(points_path);
   setup.moves_csv = moves_csv.get();
   setup.points_csv = points_csv.get();
   std::unique_ptr<std::ofstream> kinematics_csv;
   const std::string kin_png = args.given("plot-kinematics") ? args.str("plot-kinematics") : "";
-  if (!kin_png.empty()) kinematics_csv = std::make_unique<std::ofstream>(kin_png + ".csv");
+  const std::string kin_csv = kin_png.empty() ? "" : outputs().scratch(kin_png + ".csv");
+  const std::string kin_json = kin_png.empty() ? "" : outputs().scratch(kin_png + ".json");
+  if (!kin_png.empty()) kinematics_csv = std::make_unique<std::ofstream>(kin_csv);
   setup.kinematics_csv = kinematics_csv.get();
 
   const gcode::PartProgramRun run = gcode::run_part_program(setup);
@@ -228,19 +277,18 @@ int run_gcode(int argc, char** argv, int first) {
     points_csv->close();
     if (!*points_csv) throw UsageError("--plot: error writing '" + points_path + "'");
     ok = plot(HWINTERP_SCRIPTS_DIR "/plot_gcode.py",
-              {"--out=" + args.str("plot"), "--title=" + setup.program, "--", points_path},
-              args.str("plot"), {points_path}) &&
+              {"--out=" + output_path("plot"), "--title=" + setup.program, "--", points_path},
+              "plot", args.str("plot")) &&
          ok;
   }
   if (kinematics_csv) {
     kinematics_csv->close();
-    if (!*kinematics_csv)
-      throw UsageError("--plot-kinematics: error writing '" + kin_png + ".csv'");
-    std::ofstream(kin_png + ".json") << gcode::kinematics_units_json(setup, run).dump(1) << "\n";
+    if (!*kinematics_csv) throw UsageError("--plot-kinematics: error writing '" + kin_csv + "'");
+    std::ofstream(kin_json) << gcode::kinematics_units_json(setup, run).dump(1) << "\n";
     ok = plot(HWINTERP_SCRIPTS_DIR "/plot_kinematics.py",
-              {"--out=" + kin_png, "--title=" + setup.program, "--", kin_png + ".csv",
-               kin_png + ".json"},
-              kin_png, {kin_png + ".csv", kin_png + ".json"}) &&
+              {"--out=" + output_path("plot-kinematics"), "--title=" + setup.program, "--", kin_csv,
+               kin_json},
+              "plot-kinematics", kin_png) &&
          ok;
   }
   std::cout << (ok ? "PASS" : "FAIL") << "\n";

@@ -75,6 +75,7 @@ int run_log(int argc, char** argv, int first) {
   p.dl_mm = positive(args, "dl");
   p.x_end_mm = positive(args, "x-end");
   const EvenStep even = args.given("exact-even") ? EvenStep::kExact : EvenStep::kPaper;
+  stage_outputs(args, {"csv"});
 
   LogRun run;
   try {
@@ -85,7 +86,7 @@ int run_log(int argc, char** argv, int first) {
     // as much as dl and x-end.
     throw UsageError(std::string("--spiral/--d1/--dl/--x-end: ") + e.what());
   }
-  if (args.given("csv")) write_csv(args.str("csv"), run);
+  if (args.given("csv")) write_csv(output_path("csv"), run);
 
   const auto& last = run.points.back();
   std::cout << "log curve A = a ln(1 + bX): a = " << fmt("%.9g", run.a)

@@ -141,13 +141,6 @@ Polyline run_nishioka(const models::PlanarCurve& curve, double tol) {
   return out;
 }
 
-void write_text(const std::string& option, const std::string& path, const std::string& text) {
-  std::ofstream f(path);
-  if (!f) throw UsageError("--" + option + ": cannot write '" + path + "'");
-  f << text;
-  if (!f) throw UsageError("--" + option + ": failed writing '" + path + "'");
-}
-
 std::string segments_csv(const Polyline& p) {
   std::ostringstream os;
   os.precision(17);
@@ -202,6 +195,7 @@ int run_plan(int argc, char** argv, int first) {
               "scripts/plot_contour_error.py)");
   if (parse_or_help(args, argc, argv, first)) return kExitOk;
 
+  stage_outputs(args, {"csv", "error-csv"});
   if (!args.given("law")) throw UsageError("--law is required (" + laws + ")");
   const models::CamLaw law = models::parse_cam_law(args.choice("law", models::cam_law_names()));
   if (!args.given("tol")) throw UsageError("--tol is required");
@@ -262,10 +256,11 @@ int run_plan(int argc, char** argv, int first) {
             << "\n";
   std::cout << "planned in " << fmt("%.3f", seconds * 1e3) << " ms\n";
 
-  if (args.given("csv")) write_text("csv", args.str("csv"), segments_csv(poly));
+  if (args.given("csv")) write_text_file(output_path("csv"), segments_csv(poly), "--csv");
   if (args.given("error-csv"))
-    write_text("error-csv", args.str("error-csv"),
-               error_csv(*cam.curve, poly, cam.outward_sign, cam.rotating, tol));
+    write_text_file(output_path("error-csv"),
+                    error_csv(*cam.curve, poly, cam.outward_sign, cam.rotating, tol),
+                    "--error-csv");
 
   Json report = Json::object();
   report["method"] = method;

@@ -67,7 +67,7 @@ int run_profile(int argc, char** argv, int first) {
               "the feed override (0..200 %, resolution 1/128) from AT seconds on; a move's "
               "speed above 100 % is capped at the velocity limit (hls/feed_profile.h)");
   if (parse_or_help(args, argc, argv, first)) return kExitOk;
-  check_outputs_writable(args, {"csv"});
+  stage_outputs(args, {"csv"}, {"moves"});
   for (const char* n : {"max-velocity", "max-accel", "max-jerk"})
     if (!args.given(n)) throw UsageError(std::string("--") + n + " is required");
   const models::PathLimits limits{positive(args, "max-velocity"), positive(args, "max-accel"),
@@ -105,7 +105,7 @@ int run_profile(int argc, char** argv, int first) {
     for (size_t i = 0; i < r.tick_speed.size(); ++i)
       csv << i << ',' << fmt("%.9g", i * r.tick_seconds) << ',' << fmt("%.9g", r.tick_speed[i])
           << '\n';
-    write_text_file(args.str("csv"), csv.str(), "csv");
+    write_text_file(output_path("csv"), csv.str(), "--csv");
   }
   const double last_s = r.move_end_clock.back() / clock_hz, rest_s = r.rest_clock / clock_hz;
   const bool single_rest = moves.size() == 1 && moves[0].end_speed == 0;

@@ -70,13 +70,7 @@ int run_regress(int argc, char** argv, int first) {
   const uint64_t progress = static_cast<uint64_t>(args.integer("progress", 0, INT64_MAX));
   const auto [shard_k, shard_n] =
       args.given("shard") ? parse_shard(args.str("shard")) : std::pair<uint64_t, uint64_t>{1, 1};
-  if (args.given("junit")) {
-    try {
-      check_writable(args.str("junit"));
-    } catch (const std::exception& e) {
-      throw UsageError(std::string("--junit: ") + e.what());
-    }
-  }
+  stage_outputs(args, {"junit"});
   std::vector<const tb::CoreEntry*> cores;
   if (args.given("cores")) {
     for (const auto& name : split_list(args.str("cores"))) cores.push_back(&tb::find_core(name));
@@ -161,7 +155,7 @@ int run_regress(int argc, char** argv, int first) {
   std::cout << "(SystemC runs share one elaboration: their seconds are the elaboration's)\n";
   std::cout << (ok ? "PASS" : "FAIL") << "\n";
   maybe_write_json(args, report);
-  if (args.given("junit")) write_text_file(args.str("junit"), tb::junit_xml(report), "--junit");
+  if (args.given("junit")) write_text_file(output_path("junit"), tb::junit_xml(report), "--junit");
   return ok ? kExitOk : kExitCheckFailed;
 }
 

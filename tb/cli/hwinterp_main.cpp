@@ -27,24 +27,45 @@ bool parse_or_help(Args& args, int argc, char** argv, int first) {
     return true;
   }
   // The report is written at the end: a path that cannot take it fails now.
-  if (args.given("json")) {
-    try {
-      check_writable(args.str("json"));
-    } catch (const std::exception& e) {
-      throw UsageError(std::string("--json: ") + e.what());
-    }
-  }
+  stage_outputs(args, {"json"});
   return false;
 }
 
 void maybe_write_json(const Args& args, const Json& report) {
   if (!args.given("json")) return;
   try {
-    write_json_file(args.str("json"), report);
+    write_json_file(output_path("json"), report);
   } catch (const std::exception& e) {
     throw UsageError(std::string("--json: ") + e.what());
   }
 }
+
+OutputFiles& outputs() {
+  static OutputFiles files;
+  return files;
+}
+
+void stage_outputs(const Args& args, std::initializer_list<const char*> outs,
+                   std::initializer_list<const char*> inputs,
+                   const std::vector<std::string>& input_paths, const std::string& input_what) {
+  try {
+    for (const std::string& p : input_paths) outputs().input(input_what, p);
+    for (const char* o : inputs)
+      if (args.given(o)) outputs().input(std::string("--") + o, args.str(o));
+  } catch (const std::exception& e) {
+    throw UsageError(e.what());
+  }
+  for (const char* o : outs) {
+    if (!args.given(o)) continue;
+    try {
+      outputs().stage(std::string("--") + o, args.str(o));
+    } catch (const std::exception& e) {
+      throw UsageError(std::string("--") + o + ": " + e.what());
+    }
+  }
+}
+
+std::string output_path(const char* o) { return outputs().temporary(std::string("--") + o); }
 
 void check_outputs_writable(const Args& args, std::initializer_list<const char*> options) {
   for (const char* o : options) {
@@ -104,7 +125,11 @@ extern "C" int sc_main(int argc, char** argv) {
   for (const auto& s : subcommands()) {
     if (s.name != name) continue;
     try {
-      return s.run(argc, argv, 2);
+      const int rc = s.run(argc, argv, 2);
+      // A completed run (passed or failed its checks) puts its outputs in
+      // place; a refused one leaves every file as it was.
+      if (rc == kExitOk || rc == kExitCheckFailed) outputs().commit();
+      return rc;
     } catch (const std::exception& e) {
       std::cerr << "hwinterp " << name << ": error: " << one_line(e.what()) << "\n";
       return kExitBadInput;

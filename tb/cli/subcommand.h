@@ -44,8 +44,29 @@ bool parse_or_help(Args& args, int argc, char** argv, int first);
 // Writes the --json report when asked. Throws UsageError when the file can't be written.
 void maybe_write_json(const Args& args, const Json& report);
 
+// The process's output files (tb/report/output_path.h): the commands stage
+// them (the --json report is staged by parse_or_help), the dispatcher commits
+// them when the command returns 0 or 1; a command that returns 2 or throws
+// leaves every existing file as it was.
+OutputFiles& outputs();
+
+// Registers each given option of `inputs` and each of `input_paths` (named
+// `input_what`) as the run's inputs, then stages each given option of `outs`
+// (tb/report/output_path.h: writable, not an input, not another output; its
+// temporary created), before anything runs; else a UsageError naming the
+// option. The run writes output_path(o).
+void stage_outputs(const Args& args, std::initializer_list<const char*> outs,
+                   std::initializer_list<const char*> inputs = {},
+                   const std::vector<std::string>& input_paths = {},
+                   const std::string& input_what = "the input");
+
+// Where the run writes the staged output option `o` (its temporary file).
+std::string output_path(const char* o);
+
 // Every output option of `options` that was given names a path that can be
-// written; else a UsageError naming the option, before anything runs.
+// written; else a UsageError naming the option, before anything runs. For
+// outputs written while the command runs that others read live (board-sim's
+// URI file and logs); every other output is staged.
 void check_outputs_writable(const Args& args, std::initializer_list<const char*> options);
 
 // --vcd FILE / --fst FILE (one at most) and --trace-window N (only with one

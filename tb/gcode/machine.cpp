@@ -1,5 +1,6 @@
 #include "tb/gcode/machine.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iterator>
@@ -84,22 +85,52 @@ class Reader {
 // key before its value).
 json parse(const std::string& text, const std::string& name) {
   std::vector<std::set<std::string>> keys;
+  std::vector<std::string> path;  // the key being read at each level
   const json::parser_callback_t check = [&](int depth, json::parse_event_t event, json& parsed) {
     if (depth > kMaxDepth)
       throw cli::UsageError(name + ": nested deeper than " + std::to_string(kMaxDepth) + " levels");
-    if (event == json::parse_event_t::object_start) keys.emplace_back();
-    if (event == json::parse_event_t::object_end && !keys.empty()) keys.pop_back();
+    if (event == json::parse_event_t::object_start) {
+      keys.emplace_back();
+      path.emplace_back();
+    }
+    if (event == json::parse_event_t::object_end && !keys.empty()) {
+      keys.pop_back();
+      path.pop_back();
+    }
     if (event == json::parse_event_t::key && !keys.empty()) {
       const std::string k = parsed.get<std::string>();
       if (!keys.back().insert(k).second)
         throw cli::UsageError(name + ": key '" + excerpt(k, 40) + "' given twice");
+      path.back() = k;
     }
     return true;
   };
   try {
     return json::parse(text, check);
-  } catch (const json::exception& e) {
+  } catch (const json::parse_error& e) {
+    // nlohmann's message has the line and column.
     throw cli::UsageError(name + ": not a JSON machine description: " + e.what());
+  } catch (const json::exception& e) {
+    // A value the parser cannot hold (a number beyond a double: 1e999): the
+    // key being read, and the value's line and column.
+    std::string key;
+    for (const std::string& k : path)
+      if (!k.empty()) key += (key.empty() ? "" : ".") + k;
+    std::string where;
+    const std::string what = e.what();
+    const size_t q = what.find('\'');
+    const size_t q2 = q == std::string::npos ? q : what.find('\'', q + 1);
+    if (q2 != std::string::npos) {
+      const size_t at = text.find(what.substr(q + 1, q2 - q - 1));
+      if (at != std::string::npos) {
+        const size_t line_start = text.rfind('\n', at);
+        where = " (line " + std::to_string(1 + std::count(text.begin(), text.begin() + at, '\n')) +
+                ", column " +
+                std::to_string(at - (line_start == std::string::npos ? 0 : line_start + 1) + 1) +
+                ")";
+      }
+    }
+    throw cli::UsageError(name + ": " + (key.empty() ? "a value" : key) + where + ": " + what);
   }
 }
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 #include "tb/base/args.h"
 
@@ -45,6 +46,7 @@ ProfilePlanner::ProfilePlanner(const Machine& machine, int axes, const models::P
       window_(std::max<size_t>(window, 1)),
       feed_w_(feed_w) {
   double a = kInf, j = kInf;
+  int a_axis = 0, j_axis = 0;  // the axes whose limits (in steps) set a and j
   for (int i = 0; i < axes_; ++i) {
     if (!machine_.has_axis[static_cast<size_t>(i)]) continue;
     const AxisLimits& l = machine_.limits[static_cast<size_t>(i)];
@@ -55,8 +57,8 @@ ProfilePlanner::ProfilePlanner(const Machine& machine, int axes, const models::P
     if (machine_.profile == ProfileKind::kScurve && !std::isfinite(l.jerk))
       throw cli::UsageError("--machine: the S-curve profile needs max_jerk for axis " + name);
     if (!(moved >> i & 1)) continue;
-    a = std::min(a, l.accel * spu);
-    j = std::min(j, l.jerk * spu);
+    if (l.accel * spu < a) a = l.accel * spu, a_axis = i;
+    if (l.jerk * spu < j) j = l.jerk * spu, j_axis = i;
   }
   if (!std::isfinite(a)) a = j = 1;  // nothing moves: any registers do
   accel_ = kAccelShare * a;
@@ -64,8 +66,25 @@ ProfilePlanner::ProfilePlanner(const Machine& machine, int axes, const models::P
   tick_s_ = std::ldexp(1.0, build_.tick_w) / build_.clock_hz;
   try {
     regs_ = models::profile_registers({build_.clock_hz, accel_, jerk_}, build_);
-  } catch (const std::invalid_argument& e) {
-    throw cli::UsageError(std::string("--machine: ") + e.what());
+  } catch (const std::invalid_argument&) {
+    // The smallest speed step the block holds (2^-SPD_W op a clock) needs
+    // an acceleration and a jerk of at least one step a tick: say which
+    // limit of which axis is below, in the file's units.
+    const double f = build_.clock_hz, tick = std::ldexp(1.0, build_.tick_w);
+    const double quantum = std::ldexp(1.0, -build_.spd_w);
+    const double a_min = quantum * f * f / tick / kAccelShare;                   // steps/s^2
+    const double j_min = 2 * quantum * f * f * f / (tick * tick) / kAccelShare;  // steps/s^3
+    const bool accel_low = accel_ * tick / (f * f) < quantum;
+    const int i = accel_low ? a_axis : j_axis;
+    const double spu = static_cast<double>(machine_.steps_per_unit[static_cast<size_t>(i)]);
+    const AxisLimits& l = machine_.limits[static_cast<size_t>(i)];
+    std::ostringstream os;
+    os << "--machine: " << (accel_low ? "max_accel." : "max_jerk.") << kAxisNames[i] << " = "
+       << (accel_low ? l.accel : l.jerk) << " is below the feed profile's resolution at clock_hz "
+       << f << ": at least " << (accel_low ? a_min : j_min) / spu
+       << (accel_low ? " units/s^2" : " units/s^3") << " (" << spu
+       << " steps a unit; the profile's speed step is 2^-" << build_.spd_w << " step a clock)";
+    throw cli::UsageError(os.str());
   }
   if (machine_.profile == ProfileKind::kScurve) jerk_ = regs_.jerk;
   accel_ = regs_.accel;

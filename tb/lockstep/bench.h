@@ -91,7 +91,11 @@ class Bench {
         trace_ = std::make_unique<Trace>(options_.trace_path, ports, spec_.axes, spec_.pos_w,
                                          options_.trace_window);
       if (!options_.frames_path.empty())
-        frames_ = std::make_unique<FrameWriter>(options_.frames_path, spec_, ports);
+        frames_ = std::make_unique<FrameWriter>(options_.frames_path,
+                                                options_.frames_testbench_path.empty()
+                                                    ? options_.frames_path + ".sv"
+                                                    : options_.frames_testbench_path,
+                                                spec_, ports);
     }
     if (!options_.step_times_path.empty())
       step_times_ = std::make_unique<StepTimesCsv>(options_.step_times_path, spec_.axes);

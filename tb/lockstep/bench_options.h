@@ -48,6 +48,8 @@ struct BenchOptions {
   uint64_t progress_every = 0;
   // Input frames for replay in other simulators (tb/report/frames.h); empty: none.
   std::string frames_path;
+  // Their replay testbench; empty: frames_path + ".sv".
+  std::string frames_testbench_path;
   // The lattice path as CSV (case,cycle,kind,axis values...): kind `start`
   // (case start), `target` (end point of a command taken), `move` (position
   // after the core stepped); scripts/plot_paths.py draws it. Empty: none.

@@ -5,14 +5,14 @@
 
 namespace hwinterp::tb {
 
-FrameWriter::FrameWriter(const std::string& path, const VariantSpec& spec,
-                         std::vector<PortSpec> inputs)
+FrameWriter::FrameWriter(const std::string& path, const std::string& testbench,
+                         const VariantSpec& spec, std::vector<PortSpec> inputs)
     : path_(path), inputs_(std::move(inputs)), out_(path) {
   if (!out_) throw std::runtime_error("cannot write frames '" + path + "'");
-  std::ofstream tb(path + ".sv");
+  std::ofstream tb(testbench);
   tb << replay_testbench(spec, inputs_);
   tb.close();
-  if (!tb) throw std::runtime_error("cannot write replay testbench '" + path + ".sv'");
+  if (!tb) throw std::runtime_error("cannot write replay testbench '" + testbench + "'");
 }
 
 int FrameWriter::frame_bits() const {

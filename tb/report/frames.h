@@ -24,9 +24,11 @@ namespace hwinterp::tb {
 
 class FrameWriter {
  public:
-  // Writes `path` and the replay testbench `path`.sv; throws
+  // Writes the frames to `path` and the replay testbench to `testbench`
+  // (the command line's is the frames' name + ".sv"); throws
   // std::runtime_error naming the file when either cannot be written.
-  FrameWriter(const std::string& path, const VariantSpec& spec, std::vector<PortSpec> inputs);
+  FrameWriter(const std::string& path, const std::string& testbench, const VariantSpec& spec,
+              std::vector<PortSpec> inputs);
   // `in`: one value per input element, in port order.
   void write(const uint64_t* in);
   void close();  // throws on a write error
@@ -34,8 +36,7 @@ class FrameWriter {
   // Width of one frame in bits.
   int frame_bits() const;
   // The replay testbench's text (module <core>_replay_tb).
-  static std::string replay_testbench(const VariantSpec& spec,
-                                      const std::vector<PortSpec>& inputs);
+  static std::string replay_testbench(const VariantSpec& spec, const std::vector<PortSpec>& inputs);
 
  private:
   std::string path_;

@@ -26,6 +26,23 @@ struct RegressRun {
 Json regress_report(const std::vector<RegressRun>& runs, uint64_t seed, uint64_t commands,
                     const std::vector<std::string>& shards);
 
+// Checks that `report` has every field `hwinterp merge` and the report's
+// readers take, of the type they take (regress_report's top level, each run,
+// each case's fields aggregate_json and junit_xml read, shards as "K/N").
+// Throws std::invalid_argument naming the field ("runs[0].cases[2].cycles:
+// missing, an unsigned integer").
+void check_regress_report(const Json& report);
+
+// The merged report of regression shards (each checked by
+// check_regress_report; `names[i]`, a file name, names `reports[i]` in
+// messages): every run once, its cases in their order, the totals recomputed.
+// `missing` gets the shards "K/N" not given. Throws std::invalid_argument
+// naming the report and the field: reports of different regressions (seed,
+// stream length), a shard given twice or of another count, a case in two
+// reports.
+Json merge_regress_reports(const std::vector<Json>& reports, const std::vector<std::string>& names,
+                           std::vector<std::string>& missing);
+
 // JUnit XML of a regress report: a testsuite per run, a testcase per case
 // (with a failure element for a failed one).
 std::string junit_xml(const Json& report);

@@ -1,0 +1,204 @@
+// The command line against what users type (issue "Nothing destroyed,
+// nothing injected, nothing run forever"). Output files: an output
+// that is an input or another output is refused by device and inode before
+// anything runs; a refused run leaves every existing file as it was and no
+// temporary behind; an output that cannot be created is refused before the
+// run; a completed run puts every output in place. And `merge` names the
+// file and the field of a malformed report instead of crashing. A feed hold
+// or a 0 % override beyond the clock ceiling is refused before it runs. A
+// machine value is named by its key.
+#include <dirent.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "run_hwinterp.h"
+
+namespace hwinterp::testing {
+namespace {
+
+const char kProgram[] = "G21 G90\nG1 X1 Y0.5 F600\nM2\n";
+
+void write(const std::string& path, const std::string& text) { std::ofstream(path) << text; }
+
+// The names in `dir` that a run left behind as temporaries.
+std::vector<std::string> temporaries(const std::string& dir) {
+  std::vector<std::string> left;
+  if (DIR* d = opendir(dir.c_str())) {
+    while (const dirent* e = readdir(d))
+      if (std::string(e->d_name).rfind(".hwinterp-", 0) == 0) left.push_back(e->d_name);
+    closedir(d);
+  }
+  return left;
+}
+
+TEST(CliOutputs, AnOutputThatIsAnInputOrAnotherOutputIsRefused) {
+  const std::string d = scratch_dir("outputs_same");
+  const std::string ngc = d + "/v.ngc", machine = d + "/m.json";
+  write(ngc, kProgram);
+  write(machine, "{\"clock_hz\": 1000000}\n");
+  const std::string run = "gcode " + ngc + " --mode direct --progress 0 ";
+  struct Case {
+    std::string args, named;
+  };
+  const std::vector<Case> cases = {
+      {"--moves-csv " + ngc, "the program"},
+      {"--machine " + machine + " --json " + machine, "--machine"},
+      {"--moves-csv " + d + "/s.csv --step-times " + d + "/./s.csv", "--moves-csv"},
+      {"--json " + d + "/f --moves-csv " + d + "/f", "--json"},
+      {"--plot " + d + "/k.png --plot-kinematics " + d + "/k.png", "--plot"},
+  };
+  for (const Case& c : cases) {
+    const CliResult r = run_hwinterp(run + c.args);
+    EXPECT_EQ(r.code, 2) << c.args << "\n" << r.out << r.err;
+    EXPECT_NE(r.err.find(c.named), std::string::npos) << c.args << ": " << r.err;
+    EXPECT_EQ(r.out.find("PASS"), std::string::npos) << c.args << ": it ran";
+  }
+  EXPECT_EQ(slurp(ngc), kProgram);
+  EXPECT_EQ(slurp(machine), "{\"clock_hz\": 1000000}\n");
+  // The same file by another name (a hard link): compared by inode.
+  ASSERT_EQ(link(ngc.c_str(), (d + "/alias.csv").c_str()), 0);
+  const CliResult r = run_hwinterp(run + "--moves-csv " + d + "/alias.csv");
+  EXPECT_EQ(r.code, 2) << r.out << r.err;
+  EXPECT_EQ(slurp(ngc), kProgram);
+  EXPECT_TRUE(temporaries(d).empty());
+}
+
+TEST(CliOutputs, ARefusedRunLeavesEveryExistingFileAsItWas) {
+  const std::string d = scratch_dir("outputs_refused");
+  write(d + "/far.ngc", "G21 G90\nG1 X100000000 F100\nM2\n");
+  write(d + "/keep.csv", "keep\n");
+  write(d + "/keep.json", "{}\n");
+  const CliResult r =
+      run_hwinterp("gcode " + d + "/far.ngc --mode direct --progress 0 --moves-csv " + d +
+                   "/keep.csv --json " + d + "/keep.json --plot " + d + "/keep.png");
+  EXPECT_EQ(r.code, 2) << r.out << r.err;
+  EXPECT_EQ(slurp(d + "/keep.csv"), "keep\n");
+  EXPECT_EQ(slurp(d + "/keep.json"), "{}\n");
+  struct stat st {};
+  EXPECT_NE(stat((d + "/keep.png").c_str(), &st), 0) << "a refused run wrote the plot";
+  EXPECT_NE(stat((d + "/keep.png.points.csv").c_str(), &st), 0) << "the plot's data was left";
+  EXPECT_TRUE(temporaries(d).empty());
+}
+
+TEST(CliOutputs, AnOutputThatCannotBeCreatedIsRefusedBeforeTheRun) {
+  const std::string d = scratch_dir("outputs_proc");
+  write(d + "/v.ngc", kProgram);
+  for (const char* o : {"--moves-csv", "--json"}) {
+    const CliResult r = run_hwinterp("gcode " + d + "/v.ngc --mode direct --progress 0 " + o +
+                                     " /proc/hwinterp_x.out");
+    EXPECT_EQ(r.code, 2) << o << "\n" << r.out << r.err;
+    EXPECT_NE(r.err.find(o), std::string::npos) << r.err;
+    EXPECT_EQ(r.out.find("PASS"), std::string::npos) << o << ": the run went ahead";
+  }
+}
+
+TEST(CliOutputs, ACompletedRunPutsEveryOutputInPlace) {
+  const std::string d = scratch_dir("outputs_done");
+  write(d + "/v.ngc", kProgram);
+  write(d + "/moves.csv", "old\n");
+  const CliResult r =
+      run_hwinterp("gcode " + d + "/v.ngc --mode direct --progress 0 --moves-csv " + d +
+                   "/moves.csv --step-times " + d + "/steps.csv --json " + d + "/r.json");
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_EQ(slurp(d + "/moves.csv").rfind("move,", 0), 0u) << slurp(d + "/moves.csv");
+  EXPECT_EQ(slurp(d + "/steps.csv").rfind("clock,axis,dir", 0), 0u);
+  EXPECT_NE(slurp(d + "/r.json").find("\"passed\": true"), std::string::npos);
+  // A new file gets the mode an ordinary write gives it.
+  const mode_t mask = umask(0);
+  umask(mask);
+  struct stat st {};
+  ASSERT_EQ(stat((d + "/r.json").c_str(), &st), 0);
+  EXPECT_EQ(st.st_mode & 0777, 0666 & ~mask);
+  EXPECT_TRUE(temporaries(d).empty());
+}
+
+TEST(CliOutputs, MergeNamesTheFileAndTheFieldOfAMalformedReport) {
+  const std::string d = scratch_dir("outputs_merge");
+  const std::string head = "{\"seed\":1,\"random_commands\":3,";
+  struct Case {
+    std::string report, field;
+  };
+  const std::vector<Case> cases = {
+      {head + "\"shards\":[\"1/1\"],\"runs\":[{}]}", "runs[0].core"},
+      {head + "\"shards\":[3],\"runs\":[]}", "shards[0]"},
+      {head + "\"shards\":[\"1\"],\"runs\":[]}", "shards[0]"},
+      {"{\"seed\":\"1\",\"random_commands\":3,\"shards\":[\"1/1\"],\"runs\":[]}", "seed"},
+      {head +
+           "\"shards\":[\"1/1\"],\"runs\":[{\"core\":\"c\",\"variant\":\"v\",\"mode\":\"direct\","
+           "\"first_case\":0,\"seconds\":1,\"cases\":[{\"case\":\"x\"}]}]}",
+       "runs[0].cases[0]"},
+  };
+  for (const Case& c : cases) {
+    write(d + "/bad.json", c.report);
+    const CliResult r = run_hwinterp("merge " + d + "/bad.json");
+    EXPECT_EQ(r.code, 2) << c.report << "\n" << r.out << r.err;
+    EXPECT_NE(r.err.find("bad.json"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(c.field), std::string::npos) << r.err;
+  }
+}
+
+TEST(CliBounds, PausesBeyondTheClockCeilingExitTwoBeforeTheyRun) {
+  const std::string d = scratch_dir("bounds_pauses");
+  write(d + "/v.ngc", kProgram);
+  const std::string run = "gcode " + d + "/v.ngc --mode direct --progress 0 --machine " +
+                          std::string(HWINTERP_SOURCE_DIR) +
+                          "/tests/data/gcode/machine_profile.json ";
+  struct Case {
+    std::string args, named;
+  };
+  const std::vector<Case> cases = {
+      {"--feed-hold 0.01:1e9", "--feed-hold FOR"},
+      {"--feed-hold 0.01:1e300", "--feed-hold FOR"},
+      {"--feed-hold 1e300:1", "--feed-hold AT"},
+      {"--feed-override 0.01:0,1e9:100", "--feed-override AT"},
+      {"--feed-hold 0.01:150000 --feed-override 0.02:0,150000:100", "0 % override"},
+      {"--feed-hold 0.01:1 --max-clocks 1000", "--max-clocks 1000"},
+      {"--max-clocks 0", "--max-clocks"},
+  };
+  for (const Case& c : cases) {
+    const CliResult r = run_hwinterp(run + c.args);
+    EXPECT_EQ(r.code, 2) << c.args << "\n" << r.out << r.err;
+    EXPECT_NE(r.err.find(c.named), std::string::npos) << c.args << ": " << r.err;
+    EXPECT_EQ(r.out.find("PASS"), std::string::npos) << c.args << ": it ran";
+  }
+  // Within the ceiling it runs.
+  const CliResult ok = run_hwinterp(run + "--feed-hold 0.01:0.5");
+  EXPECT_EQ(ok.code, 0) << ok.out << ok.err;
+}
+
+// A machine file's value the profile cannot hold is named by its key, in
+// the file's units; a number beyond a double by its key, line and column.
+TEST(CliMessages, MachineValuesAreNamedByTheirKey) {
+  const std::string d = scratch_dir("messages_machine");
+  write(d + "/v.ngc", kProgram);
+  const std::string profile =
+      slurp(std::string(HWINTERP_SOURCE_DIR) + "/tests/data/gcode/machine_profile.json");
+  struct Case {
+    std::string from, to, named;
+  };
+  const std::vector<Case> cases = {
+      {"\"max_accel\": {\"X\": 1000", "\"max_accel\": {\"X\": 1e-9", "max_accel.X = 1e-09"},
+      {"\"max_jerk\": {\"X\": 50000", "\"max_jerk\": {\"X\": 1e-7", "max_jerk.X = 1e-07"},
+      {"\"max_jerk\": {\"X\": 50000", "\"max_jerk\": {\"X\": 1e999", "max_jerk.X (line 9"},
+  };
+  for (const Case& c : cases) {
+    std::string text = profile;
+    const size_t at = text.find(c.from);
+    ASSERT_NE(at, std::string::npos) << c.from;
+    text.replace(at, c.from.size(), c.to);
+    write(d + "/m.json", text);
+    const CliResult r =
+        run_hwinterp("gcode " + d + "/v.ngc --mode direct --progress 0 --machine " + d + "/m.json");
+    EXPECT_EQ(r.code, 2) << c.to << "\n" << r.out << r.err;
+    EXPECT_NE(r.err.find(c.named), std::string::npos) << c.to << ": " << r.err;
+  }
+}
+
+}  // namespace
+}  // namespace hwinterp::testing
