@@ -110,6 +110,7 @@ int run_cosim(int argc, char** argv, int first) {
     options.seed = args.given("seed") ? args.seed("seed") : std::random_device{}();
   options.faults = parse_injection(args);
   trace_from_args(args, options);
+  options.progress_every = static_cast<uint64_t>(args.integer("progress", 0, INT64_MAX));
   if (args.given("abort-at"))
     options.abort_at = static_cast<uint64_t>(args.integer("abort-at", 1, INT64_MAX));
 

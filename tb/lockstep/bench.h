@@ -474,11 +474,16 @@ class Bench {
 
   void print_progress() const {
     const CaseResult& r = results_.back();
-    std::fprintf(stderr, "  [%s %s] cycle %llu: case %zu/%zu '%s', command %llu/%llu\n",
+    const double s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
+    std::fprintf(stderr,
+                 "  [%s %s] cycle %llu: case %zu/%zu '%s', command %llu/%llu, %.0f s, %.3g "
+                 "clocks/s\n",
                  spec_.variant.c_str(), options_.mode.c_str(),
                  static_cast<unsigned long long>(cycle_), case_index_ + 1, cases_.size(),
                  r.name.c_str(), static_cast<unsigned long long>(r.commands),
-                 static_cast<unsigned long long>(r.commands_offered));
+                 static_cast<unsigned long long>(r.commands_offered), s,
+                 s > 0 ? static_cast<double>(cycle_) / s : 0.0);
   }
 
   // A row of the path CSV: kind start, target or move (with the move's
@@ -522,6 +527,8 @@ class Bench {
   uint64_t phase_left_ = 0;  // reset / tail edges still to drive
   uint64_t case_start_cycle_ = 0;
   uint64_t budget_ = 0;
+  // When the bench was made: the progress line's rate.
+  std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
   size_t item_ = 0;
   bool items_left_ = false;     // Case::items or Case::more still has items
   Item<A> streamed_;            // the item pulled from Case::more...

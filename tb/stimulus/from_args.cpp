@@ -52,6 +52,10 @@ void declare_cosim_options(cli::Args& args) {
       .option("dir-setup", "N", "dir setup before a step, clocks")
       .option("dir-hold", "N", "dir hold after a step, clocks")
       .option("abort-at", "CYCLE", "raise abort_i for one clock at this clock edge of the run")
+      .option("progress", "N",
+              "a progress line on stderr every N clock edges (the case, its commands, the "
+              "clocks a second; 0: none)",
+              "5000000")
       .option("vcd", "FILE", "write a VCD trace (inputs, HLS and RTL outputs)")
       .option("fst", "FILE", "write an FST trace (via vcd2fst)")
       .option("trace-window", "N", "trace only the last N cycles (e.g. before a mismatch)")
