@@ -141,8 +141,9 @@ int run_gcode(int argc, char** argv, int first) {
       .option("trace-window", "N", "keep only the last N clocks in the trace")
       .option("progress", "N", "progress line every N clocks (0: none)", "5000000")
       .option("max-clocks", "N",
-              "the ceiling on the clocks a feed hold or a 0 % override may add to the run: "
-              "one beyond it exits 2 before anything runs",
+              "the ceiling on a run's clocks: a feed hold or a 0 % override longer, or a "
+              "profiled program slower even at its time-optimal time, exits 2 before anything "
+              "runs",
               "1e11");
 
   // The program: the first argument, unless --canon names it.
@@ -199,7 +200,8 @@ int run_gcode(int argc, char** argv, int first) {
     if (setup.machine.profile == gcode::ProfileKind::kOff)
       throw UsageError("--feed-override: the override is the feed profile's; the profile is off");
   }
-  check_pauses(setup, args.real("max-clocks"));
+  setup.max_clocks = args.real("max-clocks");
+  check_pauses(setup, setup.max_clocks);
   if (!setup.bus.empty() && setup.machine.profile != gcode::ProfileKind::kOff &&
       (args.given("feed-hold") || args.given("feed-override")))
     throw UsageError(std::string("--bus ") + setup.bus +

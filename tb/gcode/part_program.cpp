@@ -18,6 +18,7 @@
 #pragma GCC diagnostic ignored "-Wunused-parameter"
 #include "hwinterp_soc.h"
 #pragma GCC diagnostic pop
+#include "models/feed_profile_model.h"
 #include "tb/base/text_table.h"
 #include "tb/bus/soc_run.h"
 #include "tb/cores/motion_top/motion_top_adapter.h"
@@ -336,16 +337,75 @@ class PlannedMoves {
  public:
   PlannedMoves(const PartProgramSetup& setup, const tb::VariantSpec& l,
                const MotionWidths& widths) {
-    uint32_t moved = 0;  // the axes the program moves: their limits set the profile's
-    {
+    // The program's commands, compiled once more for a look over the whole.
+    const auto each_command = [&](const auto& fn) {
       auto src = open_source(setup);
       MotionCompiler pass(*src, setup.machine, widths, setup.feed_mode, setup.program);
       models::MotionCommand mc;
-      while (pass.next(mc)) moved |= motion_moved_axes(mc, l.axes);
+      while (pass.next(mc)) fn(mc);
+    };
+    uint32_t moved = 0;  // the axes the program moves: their limits set the profile's
+    double ops = 0;      // the whole path's engine operations
+    each_command([&](const models::MotionCommand& mc) {
+      moved |= motion_moved_axes(mc, l.axes);
+      ops += static_cast<double>(mc.ops);
+    });
+    const double hz = static_cast<double>(setup.machine.clock_hz);
+    const models::ProfileBuild build = tb::feed_profile_build(hz);
+    // The profile changes its speed once a tick (2^TICK_W clocks): the
+    // machine's limits hold within the kinematics window only when a tick is
+    // at most half of it (at a slower clock the speed steps read as jerk
+    // beyond the limit: measured, docs/command-line.md).
+    const double min_hz = 2 * std::ldexp(1.0, build.tick_w) / setup.kinematics_window_s;
+    if (hz < min_hz)
+      throw cli::UsageError(
+          "--machine: clock_hz " + fmt("%g", hz) +
+          " is too slow for the feed profile: its tick of " + std::to_string(1u << build.tick_w) +
+          " clocks lasts " + fmt("%.3g", std::ldexp(1.0, build.tick_w) / hz * 1e3) +
+          " ms, more than half the " + fmt("%g", setup.kinematics_window_s * 1e3) +
+          " ms within which its limits hold: clock_hz at least " + fmt("%g", min_hz));
+    planner_ = std::make_unique<ProfilePlanner>(setup.machine, l.axes, build, setup.profile_window,
+                                                l.feed_w, moved);
+    // One speed level of the profile, as a jump within the kinematics
+    // window W, reads as acceleration dv / W and jerk dv / W^2: an axis
+    // limit below what one level reads as cannot be kept at this clock.
+    const double dv = planner_->registers().level_speed;  // operations/s, >= steps/s of an axis
+    const double w = setup.kinematics_window_s;
+    for (int i = 0; i < l.axes; ++i) {
+      if (!(moved >> i & 1)) continue;
+      const AxisLimits& lim = setup.machine.limits[static_cast<size_t>(i)];
+      const double spu = static_cast<double>(setup.machine.steps_per_unit[static_cast<size_t>(i)]);
+      const std::string axis(1, kAxisNames[i]);
+      const auto refuse = [&](const char* key, double value, double reads, const char* unit) {
+        throw cli::UsageError(
+            std::string("--machine: ") + key + "." + axis + " = " + fmt("%g", value) +
+            " is below what one speed level of the feed profile reads as at clock_hz " +
+            fmt("%g", hz) + ": " + fmt("%.3g", reads) + " " + unit + " (a level of " +
+            fmt("%.3g", dv / spu) + " units/s within the " + fmt("%g", w * 1e3) +
+            " ms kinematics window); raise it, or raise clock_hz");
+      };
+      if (std::isfinite(lim.accel) && dv / w > lim.accel * spu)
+        refuse("max_accel", lim.accel, dv / w / spu, "units/s^2");
+      if (setup.machine.profile == ProfileKind::kScurve && std::isfinite(lim.jerk) &&
+          dv / (w * w) > lim.jerk * spu)
+        refuse("max_jerk", lim.jerk, dv / (w * w) / spu, "units/s^3");
     }
-    planner_ = std::make_unique<ProfilePlanner>(
-        setup.machine, l.axes, tb::feed_profile_build(static_cast<double>(setup.machine.clock_hz)),
-        setup.profile_window, l.feed_w, moved);
+    // Every command's limits the profile can keep, before anything runs.
+    each_command([&](const models::MotionCommand& mc) { planner_->check(mc); });
+    // No run is faster than the whole path as one time-optimal move at the
+    // profile's acceleration and jerk and one operation a clock: refuse a
+    // program that would take more than the ceiling even so.
+    const double fastest =
+        models::optimal_move_time(ops, {hz, planner_->accel(), planner_->jerk()}) * hz;
+    if (fastest > setup.max_clocks)
+      throw cli::UsageError(
+          "--machine: the program's " + fmt("%.6g", ops) + " operations take at least " +
+          fmt("%.3g", fastest) + " clocks (" + fmt("%.3g", fastest / hz) +
+          " s) at the feed profile's acceleration " + fmt("%.3g", planner_->accel()) +
+          " and jerk " + fmt("%.3g", planner_->jerk()) +
+          " operations/s^2, /s^3 (0.8 of the smallest max_accel, max_jerk of the axes it "
+          "moves, in steps), beyond --max-clocks " +
+          fmt("%g", setup.max_clocks) + " (give a larger --max-clocks to simulate it)");
     source_ = open_source(setup);
     compiler_ = std::make_unique<MotionCompiler>(*source_, setup.machine, widths, setup.feed_mode,
                                                  setup.program);

@@ -51,6 +51,10 @@ struct PartProgramSetup {
   // Feed hold (machine.profile on): the profile's hold input high from
   // hold_at_s for hold_for_s seconds of the run; hold_at_s < 0: none.
   double hold_at_s = -1, hold_for_s = 0;
+  // The ceiling on a run's clocks (gcode --max-clocks): a profiled program
+  // whose time-optimal time at the profile's limits is beyond it is refused
+  // before it runs.
+  double max_clocks = 1e11;
   // The feed override (--feed-override AT:PCT,...), the profile's ovr_i:
   // percent from AT seconds of the run on; empty: 100 % throughout.
   std::vector<tb::OverridePoint> feed_override;

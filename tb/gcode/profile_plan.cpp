@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "tb/base/args.h"
+#include "tb/base/text_table.h"
 
 namespace hwinterp::gcode {
 namespace {
@@ -105,15 +106,9 @@ uint32_t ProfilePlanner::brake_level(uint64_t ops, uint32_t next_end) const {
   return lo;
 }
 
-void ProfilePlanner::push(const models::MotionCommand& c, bool stop_before) {
-  Entry e;
-  e.p.ops = models::motion_operations(c);
-  const double n = static_cast<double>(e.p.ops);
+ProfilePlanner::AxisCap ProfilePlanner::axis_cap(const models::MotionCommand& c) const {
+  const double n = static_cast<double>(models::motion_operations(c));
   const double f = build_.clock_hz;
-  // v: the cap by the machine (without the programmed feed, for the override)
-  double v = f;
-  const double programmed =
-      c.feed == 0 ? f : std::min(f, static_cast<double>(c.feed) * f / std::ldexp(1.0, feed_w_));
   // The step/dir stage must never stall the engine: the profile's distance
   // runs on whether or not the engine keeps up. An axis steps at most once
   // per step_len + step_space clocks, and a feed tick can come a clock early.
@@ -122,19 +117,56 @@ void ProfilePlanner::push(const models::MotionCommand& c, bool stop_before) {
                                                   std::max<int64_t>(tm.step_space, 1) + 1);
   // An axis with s steps per operation on average steps after floor(1/s)
   // operations at the least (a DDA's or a PPC's steps are spread, not evenly
-  // spaced), so the stall cap counts that gap, not the average.
-  const auto axis_cap = [&](int i, double steps_per_op) {
+  // spaced), so the stall cap counts that gap, not the average. An arc's
+  // plane axes step up to once an operation.
+  const auto plane = models::motion_plane_axes(c.plane);
+  AxisCap cap{f, -1, 0};
+  for (int i = 0; i < axes_; ++i) {
+    const bool in_plane = c.kind != models::MotionKind::kLine && (i == plane[0] || i == plane[1]);
+    const double steps_per_op =
+        in_plane ? 1.0 : std::abs(static_cast<double>(c.delta[static_cast<size_t>(i)])) / n;
+    if (steps_per_op <= 0) continue;
     const AxisLimits& l = machine_.limits[static_cast<size_t>(i)];
     const double spu = static_cast<double>(machine_.steps_per_unit[static_cast<size_t>(i)]);
-    if (steps_per_op <= 0) return;
-    if (std::isfinite(l.velocity)) v = std::min(v, l.velocity * spu / steps_per_op);
-    v = std::min(v, f * std::floor(1 / steps_per_op) / pulse_clocks);
-  };
+    if (std::isfinite(l.velocity) && l.velocity * spu / steps_per_op < cap.v)
+      cap = {l.velocity * spu / steps_per_op, i, steps_per_op};
+    const double stall = f * std::floor(1 / steps_per_op) / pulse_clocks;
+    if (stall < cap.v) cap = {stall, -1, 0};
+  }
+  return cap;
+}
+
+void ProfilePlanner::check(const models::MotionCommand& c) const {
+  // The profile's slowest cruise is one level: an axis limit below it cannot
+  // be kept (the move would run at a level anyway).
+  const AxisCap cap = axis_cap(c);
+  if (cap.axis < 0 || models::profile_level(regs_, cap.v) > 0) return;
+  const size_t i = static_cast<size_t>(cap.axis);
+  const double spu = static_cast<double>(machine_.steps_per_unit[i]);
+  throw cli::UsageError(
+      "--machine: max_velocity." + std::string(1, kAxisNames[cap.axis]) + " = " +
+      fmt("%g", machine_.limits[i].velocity) +
+      " is below the feed profile's slowest speed at clock_hz " + fmt("%g", build_.clock_hz) +
+      ": one level of the profile is " + fmt("%.3g", regs_.level_speed * cap.steps_per_op / spu) +
+      " units/s along it (" + fmt("%.3g", regs_.level_speed) +
+      " operations/s at these max_accel and max_jerk): raise max_velocity to it, or lower "
+      "max_accel or max_jerk, or raise clock_hz");
+}
+
+void ProfilePlanner::push(const models::MotionCommand& c, bool stop_before) {
+  check(c);
+  Entry e;
+  e.p.ops = models::motion_operations(c);
+  const double n = static_cast<double>(e.p.ops);
+  const double f = build_.clock_hz;
+  // v: the cap by the machine (without the programmed feed, for the override)
+  double v = axis_cap(c).v;
+  const double programmed =
+      c.feed == 0 ? f : std::min(f, static_cast<double>(c.feed) * f / std::ldexp(1.0, feed_w_));
   if (c.kind == models::MotionKind::kLine) {
     for (int i = 0; i < axes_; ++i) {
       const double d = static_cast<double>(c.delta[static_cast<size_t>(i)]);
       e.s_start[static_cast<size_t>(i)] = e.s_end[static_cast<size_t>(i)] = d / n;
-      axis_cap(i, std::abs(d) / n);
     }
   } else {
     const auto ax = models::motion_plane_axes(c.plane);
@@ -146,12 +178,8 @@ void ProfilePlanner::push(const models::MotionCommand& c, bool stop_before) {
     plane_rate(e.s_end, ax, -sgn * ry, sgn * rx);
     for (int i = 0; i < axes_; ++i) {
       const double d = static_cast<double>(c.delta[static_cast<size_t>(i)]);
-      if (i != ax[0] && i != ax[1]) {
+      if (i != ax[0] && i != ax[1])
         e.s_start[static_cast<size_t>(i)] = e.s_end[static_cast<size_t>(i)] = d / n;
-        axis_cap(i, std::abs(d) / n);
-      } else {
-        axis_cap(i, 1.0);
-      }
     }
     const double r = std::hypot(cx, cy);
     if (r > 0) {

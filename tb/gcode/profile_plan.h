@@ -77,6 +77,10 @@ class ProfilePlanner {
   // The next command, in program order; stop_before: the machine is at rest
   // before it (M0, M1: an exact stop at the junction).
   void push(const models::MotionCommand& c, bool stop_before = false);
+  // Throws cli::UsageError naming the key when the machine's limits for `c`
+  // cannot be kept by the profile (a max_velocity below one level); push
+  // checks each command, a caller may check a whole program before it runs.
+  void check(const models::MotionCommand& c) const;
   void finish();                  // the program ended
   bool pop(ProfileCommand& out);  // the next planned command, if any is final
 
@@ -86,6 +90,15 @@ class ProfilePlanner {
     std::array<double, models::kMotionMaxAxes> s_start{}, s_end{};  // steps per operation
     double max_end = 0;  // the junction's bound into the next command (levels)
   };
+  // The speed cap (operations/s) of `c` from its axes' max_velocity and the
+  // step/dir stage, and the axis whose max_velocity sets it (-1: the stage
+  // or nothing does) with its steps per operation.
+  struct AxisCap {
+    double v;
+    int axis;
+    double steps_per_op;
+  };
+  AxisCap axis_cap(const models::MotionCommand& c) const;
   uint32_t brake_level(uint64_t ops, uint32_t next_end) const;
   void plan_back();
 

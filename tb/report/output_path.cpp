@@ -1,5 +1,6 @@
 #include "tb/report/output_path.h"
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -44,7 +45,7 @@ OutputFiles::OutputFiles() {
 
 OutputFiles::~OutputFiles() {
   for (const File& f : files_)
-    if (!f.temporary.empty()) std::remove(f.temporary.c_str());
+    if (!f.temporary.empty() && !f.in_place) std::remove(f.temporary.c_str());
 }
 
 OutputFiles::Identity OutputFiles::identity(const std::string& path) {
@@ -63,7 +64,7 @@ const OutputFiles::File* OutputFiles::same_as(const Identity& id) const {
 
 void OutputFiles::input(const std::string& what, const std::string& path) {
   struct stat st {};
-  if (stat(path.c_str(), &st) != 0) return;
+  if (stat(path.c_str(), &st) != 0 || !S_ISREG(st.st_mode)) return;  // only files are overwritten
   const Identity id = identity(path);
   if (const File* f = same_as(id); f && f->output)
     throw std::runtime_error("'" + path + "' is both " + what + " and the output " + f->what +
@@ -86,14 +87,58 @@ std::string OutputFiles::make_temporary(const std::string& path) {
   return std::string(buf.data());
 }
 
+bool OutputFiles::written_in_place(const std::string& path) {
+  const auto special = [](const std::string& p) {
+    return p.rfind("/dev/", 0) == 0 || p.rfind("/proc/", 0) == 0;
+  };
+  if (special(path)) return true;
+  struct stat st {};
+  if (lstat(path.c_str(), &st) == 0 && S_ISLNK(st.st_mode)) {
+    std::vector<char> target(4096);
+    const ssize_t n = readlink(path.c_str(), target.data(), target.size() - 1);
+    if (n > 0 && special(std::string(target.data(), static_cast<size_t>(n)))) return true;
+  }
+  return stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode);
+}
+
 std::string OutputFiles::stage(const std::string& what, const std::string& path) {
+  // A device, a pipe, or a name under /dev or /proc (/dev/stdout: renaming
+  // onto it would replace the link, and a file behind a descriptor would be
+  // left unchanged) is written in place, and is no file another output or an
+  // input could be (two outputs to /dev/stdout interleave, as asked).
+  struct stat st {};
+  if (written_in_place(path)) {
+    check_writable(path);
+    // Opened for writing now (without truncating; a pipe without a reader is
+    // not waited for): root's access() says yes to /proc, open() does not.
+    const bool existed = stat(path.c_str(), &st) == 0;
+    if (!existed || !S_ISFIFO(st.st_mode)) {
+      const int fd = open(path.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_NONBLOCK, 0666);
+      if (fd < 0)
+        throw std::runtime_error("cannot write '" + path + "' (" + std::strerror(errno) + ")");
+      close(fd);
+      if (!existed) std::remove(path.c_str());
+    }
+    File f{what, path, path, Identity{0, 0, "\n" + path}};
+    f.in_place = true;
+    files_.push_back(f);
+    return path;
+  }
   const Identity id = identity(path);
   if (const File* f = same_as(id))
     throw std::runtime_error("'" + path + "' is also " + (f->output ? "the output " : "") +
                              f->what +
                              (f->output ? ": give each output its own file"
                                         : ": the run would overwrite what it reads"));
-  File f{what, path, make_temporary(path), id};
+  // A symbolic link stays: the file it names is replaced.
+  std::string target = path;
+  if (lstat(path.c_str(), &st) == 0 && S_ISLNK(st.st_mode)) {
+    if (char* real = realpath(path.c_str(), nullptr)) {
+      target = real;
+      std::free(real);
+    }
+  }
+  File f{what, target, make_temporary(target), id};
   files_.push_back(f);
   return f.temporary;
 }
@@ -113,7 +158,7 @@ std::string OutputFiles::scratch(const std::string& path) {
 void OutputFiles::discard(const std::string& what) {
   for (File& f : files_)
     if (f.output && !f.scratch && f.what == what && !f.temporary.empty()) {
-      std::remove(f.temporary.c_str());
+      if (!f.in_place) std::remove(f.temporary.c_str());
       f.temporary.clear();
     }
 }
@@ -121,7 +166,7 @@ void OutputFiles::discard(const std::string& what) {
 void OutputFiles::commit() {
   std::string first_error;
   for (File& f : files_) {
-    if (!f.output || f.scratch || f.temporary.empty()) continue;
+    if (!f.output || f.scratch || f.in_place || f.temporary.empty()) continue;
     struct stat st {};
     const mode_t mode = stat(f.path.c_str(), &st) == 0 ? (st.st_mode & 07777) : (0666 & ~umask_);
     chmod(f.temporary.c_str(), mode);

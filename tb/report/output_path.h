@@ -39,7 +39,9 @@ class OutputFiles {
   // yet by its directory's device and inode and its name), or when no file
   // can be created in its directory. Creates the temporary file beside it
   // (hidden, its name ending in the file's name, so the extension stays) and
-  // returns its path: the run writes there.
+  // returns its path: the run writes there. A path that exists and is not a
+  // regular file (/dev/stdout, a pipe, a device) is returned as it is: the
+  // run writes to it directly, nothing is renamed onto it.
   std::string stage(const std::string& what, const std::string& path);
 
   // The temporary of the output `what` (as stage returned it); "" if none.
@@ -72,8 +74,12 @@ class OutputFiles {
     Identity id;
     bool output = true;  // else an input
     bool scratch = false;
+    bool in_place = false;  // not a regular file (a device, a pipe): written directly
   };
   static Identity identity(const std::string& path);
+  // A path the run must write directly: a device, a pipe, a name under /dev
+  // or /proc, or a symbolic link into them.
+  static bool written_in_place(const std::string& path);
   std::string make_temporary(const std::string& path);
   const File* same_as(const Identity& id) const;
 

@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -118,6 +119,22 @@ TEST(CliOutputs, ACompletedRunPutsEveryOutputInPlace) {
   EXPECT_TRUE(temporaries(d).empty());
 }
 
+// A device, a pipe or a name under /dev is written in place: nothing is
+// renamed onto /dev/null or onto the /dev/stdout link.
+TEST(CliOutputs, ADeviceIsWrittenInPlace) {
+  const std::string d = scratch_dir("outputs_device");
+  write(d + "/v.ngc", kProgram);
+  const CliResult r = run_hwinterp("gcode " + d + "/v.ngc --mode direct --progress 0 --json " +
+                                   "/dev/stdout --moves-csv /dev/null");
+  EXPECT_EQ(r.code, 0) << r.out << r.err;
+  struct stat st {};
+  ASSERT_EQ(stat("/dev/null", &st), 0);
+  EXPECT_TRUE(S_ISCHR(st.st_mode)) << "/dev/null was replaced";
+  ASSERT_EQ(lstat("/dev/stdout", &st), 0);
+  EXPECT_TRUE(S_ISLNK(st.st_mode)) << "/dev/stdout was replaced";
+  EXPECT_TRUE(temporaries("/dev").empty());
+}
+
 TEST(CliOutputs, MergeNamesTheFileAndTheFieldOfAMalformedReport) {
   const std::string d = scratch_dir("outputs_merge");
   const std::string head = "{\"seed\":1,\"random_commands\":3,";
@@ -170,6 +187,74 @@ TEST(CliBounds, PausesBeyondTheClockCeilingExitTwoBeforeTheyRun) {
   // Within the ceiling it runs.
   const CliResult ok = run_hwinterp(run + "--feed-hold 0.01:0.5");
   EXPECT_EQ(ok.code, 0) << ok.out << ok.err;
+}
+
+// The committed profile machine with clock_hz and each limit swept over
+// decades: every point passes (exit 0, PASS) or is refused before it runs
+// (exit 2, one line naming a key or an option), never a failed check (exit
+// 1): a value the hardware cannot represent is bad input, not a hardware
+// fault. --max-clocks keeps the slow points short (they are refused by the
+// time-optimal bound).
+TEST(CliBounds, MachineSweepPassesOrIsRefusedNeverFails) {
+  const std::string d = scratch_dir("bounds_sweep");
+  write(d + "/p.ngc", "G21 G90\nG1 X0.2 Y0.1 F600\nG2 X0.4 Y0.1 I0.1 J0\nM2\n");
+  const std::string profile =
+      slurp(std::string(HWINTERP_SOURCE_DIR) + "/tests/data/gcode/machine_profile.json");
+  int passed = 0, refused = 0;
+  for (const char* hz : {"100000", "500000", "5000000"})
+    for (const char* key : {"max_velocity", "max_accel", "max_jerk"})
+      for (const char* factor : {"1e-9", "1e-4", "1e-1", "1e2", "1e6"}) {
+        // The machine with clock_hz and every axis's `key` scaled.
+        std::string text = profile;
+        const std::string clock = "\"clock_hz\": 500000";
+        const size_t c = text.find(clock);
+        ASSERT_NE(c, std::string::npos);
+        text.replace(c, clock.size(), std::string("\"clock_hz\": ") + hz);
+        const size_t k = text.find(std::string("\"") + key + "\": {");
+        ASSERT_NE(k, std::string::npos) << key;
+        const size_t open = text.find('{', k), close = text.find('}', k);
+        std::string limits = text.substr(open, close - open);
+        std::string scaled;
+        for (size_t i = 0; i < limits.size();) {
+          if (std::isdigit(static_cast<unsigned char>(limits[i]))) {
+            size_t j = i;
+            while (j < limits.size() && std::isdigit(static_cast<unsigned char>(limits[j]))) ++j;
+            scaled += limits.substr(i, j - i) + "e0*";
+            i = j;
+          } else {
+            scaled += limits[i++];
+          }
+        }
+        // "X": 1000e0* -> "X": 1000e-4: the factor's exponent on each value.
+        const std::string exponent = std::string(factor).substr(1);
+        std::string out;
+        for (size_t i = 0; i < scaled.size(); ++i) {
+          if (scaled.compare(i, 3, "e0*") == 0) {
+            out += exponent;
+            i += 2;
+          } else {
+            out += scaled[i];
+          }
+        }
+        text.replace(open, close - open, out);
+        write(d + "/m.json", text);
+        const CliResult r = run_hwinterp("gcode " + d + "/p.ngc --mode direct --progress 0 " +
+                                         "--max-clocks 2e6 --machine " + d + "/m.json");
+        const std::string point = std::string("clock_hz ") + hz + ", " + key + " x " + factor;
+        EXPECT_TRUE(r.code == 0 || r.code == 2) << point << ": exit " << r.code << "\n"
+                                                << r.out << r.err;
+        if (r.code == 0) {
+          EXPECT_NE(r.out.find("PASS"), std::string::npos) << point;
+          ++passed;
+        }
+        if (r.code == 2) {
+          EXPECT_EQ(r.out.find("PASS"), std::string::npos) << point << ": refused after a run";
+          ++refused;
+        }
+      }
+  // Both kinds are in the sweep: it measures something.
+  EXPECT_GT(passed, 10);
+  EXPECT_GT(refused, 10);
 }
 
 // A machine file's value the profile cannot hold is named by its key, in
