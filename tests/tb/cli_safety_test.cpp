@@ -124,14 +124,17 @@ TEST(CliOutputs, ACompletedRunPutsEveryOutputInPlace) {
 TEST(CliOutputs, ADeviceIsWrittenInPlace) {
   const std::string d = scratch_dir("outputs_device");
   write(d + "/v.ngc", kProgram);
+  struct stat before {
+  }, after{};
+  ASSERT_EQ(lstat("/dev/stdout", &before), 0);
   const CliResult r = run_hwinterp("gcode " + d + "/v.ngc --mode direct --progress 0 --json " +
                                    "/dev/stdout --moves-csv /dev/null");
   EXPECT_EQ(r.code, 0) << r.out << r.err;
-  struct stat st {};
-  ASSERT_EQ(stat("/dev/null", &st), 0);
-  EXPECT_TRUE(S_ISCHR(st.st_mode)) << "/dev/null was replaced";
-  ASSERT_EQ(lstat("/dev/stdout", &st), 0);
-  EXPECT_TRUE(S_ISLNK(st.st_mode)) << "/dev/stdout was replaced";
+  ASSERT_EQ(stat("/dev/null", &after), 0);
+  EXPECT_TRUE(S_ISCHR(after.st_mode)) << "/dev/null was replaced";
+  ASSERT_EQ(lstat("/dev/stdout", &after), 0);
+  EXPECT_EQ(after.st_ino, before.st_ino) << "/dev/stdout was replaced";
+  EXPECT_EQ(after.st_mode, before.st_mode) << "/dev/stdout was replaced";
   EXPECT_TRUE(temporaries("/dev").empty());
 }
 
