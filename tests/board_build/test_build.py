@@ -77,6 +77,25 @@ def test_sys_fmax_takes_the_clock_constrained_at_the_system_clock():
         build.sys_fmax(report, 27_000_000)
 
 
+def test_sys_fmax_takes_the_clock_asked_for_at_the_margin():
+    report = {"fmax": {"eth_rx_clk": {"achieved": 136.4, "constraint": 125.0},
+                       "sys_clk": {"achieved": 60.53, "constraint": 57.501}}}
+    assert build.sys_fmax(report, 50_000_000) == ("sys_clk", 60.53)
+
+
+def test_margin_lpf_asks_the_reference_port_for_the_margin(tmp_path):
+    lpf = tmp_path / "b.lpf"
+    lpf.write_text('FREQUENCY PORT "eth_rx_clk" 125.0 MHz;\nFREQUENCY PORT "clk25" 25.0 MHz;\n')
+    g = build.Gateware(name="b", family="ecp5", flow={"sys_ref": "clk25"}, sys_hz=50_000_000,
+                       dir=str(tmp_path), ys="", constraints=str(lpf), pre_pack=None, what="")
+    text = open(build.margin_lpf(g, str(tmp_path))).read()
+    assert 'FREQUENCY PORT "clk25" 28.75 MHz;' in text
+    assert 'FREQUENCY PORT "eth_rx_clk" 125.0 MHz;' in text
+    g.flow = {"sys_ref": "clk27"}
+    with pytest.raises(build.Failed, match="clk27"):
+        build.margin_lpf(g, str(tmp_path))
+
+
 def test_verdict_names_the_seed_and_fmax_below_the_margin():
     result = {"board": "b", "sys_mhz": 50.0, "need_mhz": 57.5,
               "runs": [{"seed": 1, "fmax_mhz": 57.5}, {"seed": 2, "fmax_mhz": 57.49},
