@@ -136,10 +136,11 @@ ProfilePlanner::AxisCap ProfilePlanner::axis_cap(const models::MotionCommand& c)
   return cap;
 }
 
-void ProfilePlanner::check(const models::MotionCommand& c) const {
+void ProfilePlanner::check(const models::MotionCommand& c) const { check_cap(axis_cap(c)); }
+
+void ProfilePlanner::check_cap(const AxisCap& cap) const {
   // The profile's slowest cruise is one level: an axis limit below it cannot
   // be kept (the move would run at a level anyway).
-  const AxisCap cap = axis_cap(c);
   if (cap.axis < 0 || models::profile_level(regs_, cap.v) > 0) return;
   const size_t i = static_cast<size_t>(cap.axis);
   const double spu = static_cast<double>(machine_.steps_per_unit[i]);
@@ -154,13 +155,14 @@ void ProfilePlanner::check(const models::MotionCommand& c) const {
 }
 
 void ProfilePlanner::push(const models::MotionCommand& c, bool stop_before) {
-  check(c);
+  const AxisCap cap = axis_cap(c);
+  check_cap(cap);
   Entry e;
   e.p.ops = models::motion_operations(c);
   const double n = static_cast<double>(e.p.ops);
   const double f = build_.clock_hz;
   // v: the cap by the machine (without the programmed feed, for the override)
-  double v = axis_cap(c).v;
+  double v = cap.v;
   const double programmed =
       c.feed == 0 ? f : std::min(f, static_cast<double>(c.feed) * f / std::ldexp(1.0, feed_w_));
   if (c.kind == models::MotionKind::kLine) {

@@ -99,6 +99,7 @@ class ProfilePlanner {
     double steps_per_op;
   };
   AxisCap axis_cap(const models::MotionCommand& c) const;
+  void check_cap(const AxisCap& cap) const;  // check()'s refusal, on a cap already taken
   uint32_t brake_level(uint64_t ops, uint32_t next_end) const;
   void plan_back();
 

@@ -216,28 +216,16 @@ TEST(CliBounds, MachineSweepPassesOrIsRefusedNeverFails) {
         const size_t k = text.find(std::string("\"") + key + "\": {");
         ASSERT_NE(k, std::string::npos) << key;
         const size_t open = text.find('{', k), close = text.find('}', k);
-        std::string limits = text.substr(open, close - open);
-        std::string scaled;
-        for (size_t i = 0; i < limits.size();) {
-          if (std::isdigit(static_cast<unsigned char>(limits[i]))) {
-            size_t j = i;
-            while (j < limits.size() && std::isdigit(static_cast<unsigned char>(limits[j]))) ++j;
-            scaled += limits.substr(i, j - i) + "e0*";
-            i = j;
-          } else {
-            scaled += limits[i++];
-          }
-        }
-        // "X": 1000e0* -> "X": 1000e-4: the factor's exponent on each value.
+        // Each whole number gets the factor's exponent: "X": 1000 -> "X": 1000e-4.
+        const std::string limits = text.substr(open, close - open);
         const std::string exponent = std::string(factor).substr(1);
         std::string out;
-        for (size_t i = 0; i < scaled.size(); ++i) {
-          if (scaled.compare(i, 3, "e0*") == 0) {
+        for (size_t i = 0; i < limits.size(); ++i) {
+          out += limits[i];
+          const bool digit = std::isdigit(static_cast<unsigned char>(limits[i]));
+          if (digit &&
+              (i + 1 == limits.size() || !std::isdigit(static_cast<unsigned char>(limits[i + 1]))))
             out += exponent;
-            i += 2;
-          } else {
-            out += scaled[i];
-          }
         }
         text.replace(open, close - open, out);
         write(d + "/m.json", text);
