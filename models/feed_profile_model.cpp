@@ -74,6 +74,34 @@ unsigned override_word(double percent) {
   return static_cast<unsigned>(std::lround(percent * 128 / 100));
 }
 
+double profile_move_clocks(const ProfileRegisters& regs, const ProfileBuild& build, uint32_t entry,
+                           uint64_t ops, uint32_t cruise, uint32_t end) {
+  const double tick = std::ldexp(1.0, build.tick_w);   // clocks
+  const double q = regs.level_speed / build.clock_hz;  // operations a clock of one level
+  const double n = static_cast<double>(ops), e = entry, x = end;
+  double t_in = 0, d_in = 0, t_out = 0, d_out = 0;
+  const auto change = [&](double from, double to, double& clocks, double& dist) {
+    clocks = from == to ? 0 : (std::fabs(to - from) + regs.len) * tick;
+    dist = (from + to) / 2 * q * clocks;
+  };
+  const auto fits = [&](double c) {
+    change(e, c, t_in, d_in);
+    change(c, x, t_out, d_out);
+    return d_in + d_out <= n;
+  };
+  double lo = std::max(e, x), hi = std::max(lo, static_cast<double>(cruise));
+  if (!fits(hi)) {  // the highest cruise level whose changes fit, by bisection
+    while (hi - lo > 1) {
+      const double mid = std::floor((lo + hi) / 2);
+      (fits(mid) ? lo : hi) = mid;
+    }
+    hi = lo;
+    fits(hi);
+  }
+  if (hi <= 0 || q <= 0) return n;  // no speed to go by: one operation a clock
+  return t_in + t_out + std::max(0.0, n - d_in - d_out) / (hi * q);
+}
+
 double optimal_move_time(double distance, const PathLimits& limits) {
   const double v = limits.velocity, a = limits.accel, j = limits.jerk;
   if (!(distance > 0)) return 0;

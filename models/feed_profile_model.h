@@ -58,6 +58,16 @@ double profile_entry_cost(double e, double next_end, unsigned len);
 // resolution). Throws std::invalid_argument naming the value outside 0..200.
 unsigned override_word(double percent);
 
+// The clocks the block takes over a move of `ops` operations entered at level
+// `entry`, cruising at level `cruise` and ending at level `end`, as its
+// rules give them: the level moves a step a tick and the speed is its moving
+// sum over L ticks, so a change of d levels lasts d + L ticks at the mean of
+// its two speeds; the cruise level is lowered until the changes in and out fit
+// the move. An estimate (the progress lines', the clock ceilings'): the block's
+// reversal holds and the ticks' phase are left out.
+double profile_move_clocks(const ProfileRegisters& regs, const ProfileBuild& build, uint32_t entry,
+                           uint64_t ops, uint32_t cruise, uint32_t end);
+
 // The shortest time (s) of a rest-to-rest move of `distance` ops within the
 // limits (the 7-phase S-curve, or fewer phases when a limit is not reached).
 double optimal_move_time(double distance, const PathLimits& limits);

@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "models/lattice_path.h"
@@ -28,6 +29,7 @@
 #include "tb/bus/hls_shadow.h"
 #include "tb/bus/soc_host.h"
 #include "tb/monitor/step_output_monitor.h"
+#include "tb/report/progress.h"
 
 namespace hwinterp::tb::bus {
 
@@ -89,6 +91,14 @@ class LatticeCheck {
   int64_t first_point_ = -1, first_end_ = -1;
 };
 
+// When a bus run ends and how it reports on the way.
+struct SocRunLimits {
+  uint64_t drain = 0;           // clocks with no step after the last completed command
+  uint64_t max_clocks = 0;      // the run's ceiling: a run past it has stalled
+  uint64_t progress_every = 0;  // a progress line on stderr every this many clocks (0: none)
+  double expected_clocks = 0;   // its estimate, for the line's percent (0: none)
+};
+
 struct SocRunResult {
   uint64_t clocks = 0;     // clock edges after reset
   uint64_t completed = 0;  // done_o pulses
@@ -106,8 +116,8 @@ struct SocRunResult {
 // master `Master<Model>`; Probe::done(model) reads motion_top's done_o.
 // `shadow` (tb/bus/hls_shadow.h: the HLS face, or NoShadow) takes the same
 // pins on every clock and is compared with the model. The run ends when the
-// host is done, every push completed and `drain` clocks passed with no step;
-// at the HLS face's first difference; or after max_clocks.
+// host is done, every push completed and `limits.drain` clocks passed with no
+// step; at the HLS face's first difference; or after `limits.max_clocks`.
 // Reset: two rising edges with rst_ni low (probe and e-stop low; the caller
 // has put the bus pins in their idle state). before_edge(m) runs before each
 // rising edge: an HLS shadow samples the pins there.
@@ -147,7 +157,7 @@ bool soc_clock(Model& m, Master& master, Shadow& shadow, uint64_t clock) {
 template <class Model, template <class> class Master, class Probe, class Src, class Sink,
           class Shadow>
 SocRunResult run_soc(Src& src, const SocSetup& setup, Sink& sink, Shadow& shadow,
-                     const WaitStates& waits, uint64_t drain, uint64_t max_clocks) {
+                     const WaitStates& waits, const SocRunLimits& limits) {
   struct RestoreThreadContext {
     ~RestoreThreadContext() { Verilated::threadContextp(Verilated::defaultContextp()); }
   } restore;
@@ -170,9 +180,14 @@ SocRunResult run_soc(Src& src, const SocSetup& setup, Sink& sink, Shadow& shadow
   bool done_prev = false;
   BusTxn t;
   BusRsp rsp;
-  while (r.clocks < max_clocks) {
+  tb::ProgressLine progress(limits.expected_clocks);
+  while (r.clocks < limits.max_clocks) {
     if (master.idle() && host.next(t, m.irq_o)) master.issue(t);
     const bool done = soc_clock<Probe>(m, master, shadow, ++r.clocks);
+    if (limits.progress_every && r.clocks % limits.progress_every == 0)
+      progress.print(r.clocks, "motion_soc bus",
+                     std::to_string(r.completed) + " commands done of " +
+                         std::to_string(host.counts().pushes) + " pushed");
     if (shadow.failed()) break;
     if (master.take(rsp)) host.response(rsp);
     uint32_t dir = 0;
@@ -190,9 +205,10 @@ SocRunResult run_soc(Src& src, const SocSetup& setup, Sink& sink, Shadow& shadow
     // done_o one clock late too, after the steps of its clock.
     if (done_prev) sink.done(r.completed++, r.end);
     done_prev = done;
-    if (host.finished() && r.completed >= host.counts().pushes && quiet >= drain) break;
+    if (host.finished() && r.completed >= host.counts().pushes && quiet >= limits.drain) break;
   }
-  r.timed_out = r.clocks >= max_clocks;
+  progress.finish();
+  r.timed_out = r.clocks >= limits.max_clocks;
   r.shadow = shadow.mismatch();
   r.host = host.counts();
   m.final();

@@ -66,6 +66,10 @@ int run_profile(int argc, char** argv, int first) {
   args.option("feed-override", "AT:PCT[,AT:PCT...]",
               "the feed override (0..200 %, resolution 1/128) from AT seconds on; a move's "
               "speed above 100 % is capped at the velocity limit (hls/feed_profile.h)");
+  args.option("max-clocks", "N",
+              "the ceiling on the run's clocks: moves estimated to take more exit 2 before they "
+              "run",
+              "1e11");
   if (parse_or_help(args, argc, argv, first)) return kExitOk;
   stage_outputs(args, {"csv"}, {"moves"});
   for (const char* n : {"max-velocity", "max-accel", "max-jerk"})
@@ -95,7 +99,7 @@ int run_profile(int argc, char** argv, int first) {
   tb::ProfileRunResult r;
   try {
     r = tb::run_feed_profile(limits, clock_hz, moves, args.given("csv"),
-                             tb::override_steps(ovr, clock_hz));
+                             tb::override_steps(ovr, clock_hz), args.real("max-clocks", 1, 1e15));
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--max-velocity/--max-accel/--max-jerk/--clock-hz: ") + e.what());
   }

@@ -7,6 +7,7 @@
 // --shard K/N runs a deterministic slice: the cases of all runs numbered in
 // order (core, variant, mode, case), those whose number is K-1 modulo N.
 // `hwinterp merge` joins the shards' reports into the unsharded run's report.
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <iostream>
@@ -118,12 +119,17 @@ int run_regress(int argc, char** argv, int first) {
   // Direct runs one after the other; SystemC runs side by side in the one
   // elaboration a process may have.
   std::vector<tb::BenchRun*> sc_runs;
+  size_t direct_done = 0;
+  const size_t direct_runs = static_cast<size_t>(
+      std::count_if(runs.begin(), runs.end(), [](const Run& r) { return r.mode == "direct"; }));
   for (auto& r : runs) {
     if (r.mode != "direct") {
       sc_runs.push_back(r.bench.get());
       continue;
     }
-    std::cout << "  running " << r.variant << " direct ...\n" << std::flush;
+    std::cout << "  running " << r.variant << " direct (run " << ++direct_done << " of "
+              << direct_runs << ") ...\n"
+              << std::flush;
     const double t0 = now();
     r.bench->run_direct();
     r.seconds = now() - t0;

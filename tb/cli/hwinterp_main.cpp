@@ -71,7 +71,7 @@ void check_outputs_writable(const Args& args, std::initializer_list<const char*>
   for (const char* o : options) {
     if (!args.given(o)) continue;
     try {
-      check_writable(args.str(o));
+      outputs().live(std::string("--") + o, args.str(o));
     } catch (const std::exception& e) {
       throw UsageError(std::string("--") + o + ": " + e.what());
     }

@@ -64,9 +64,10 @@ void stage_outputs(const Args& args, std::initializer_list<const char*> outs,
 std::string output_path(const char* o);
 
 // Every output option of `options` that was given names a path that can be
-// written; else a UsageError naming the option, before anything runs. For
-// outputs written while the command runs that others read live (board-sim's
-// URI file and logs); every other output is staged.
+// written, and not the file of an input or another output (OutputFiles::live);
+// else a UsageError naming the option, before anything runs. For outputs
+// written while the command runs that others read live (board-sim's URI file
+// and logs); every other output is staged.
 void check_outputs_writable(const Args& args, std::initializer_list<const char*> options);
 
 // --vcd FILE / --fst FILE (one at most) and --trace-window N (only with one

@@ -31,6 +31,7 @@
 #include "tb/lockstep/profile_feed.h"
 #include "tb/monitor/kinematics.h"
 #include "tb/report/cosim_report.h"
+#include "tb/report/progress.h"
 
 namespace hwinterp::gcode {
 
@@ -333,6 +334,66 @@ std::vector<std::string> limit_failures(const Kinematics& k, ProfileKind kind,
 // The feed profile's moves of a program, one per command in order: a
 // planner on its own pass over the program (its registers from the limits
 // of the axes the program moves), a window of commands ahead.
+// The least clocks the step/dir stage lets `mc` take: its busiest axis's
+// steps at one step each step_len + step_space clocks. An arc's operations
+// step its plane axes, one step each; the busier axis takes about 0.707 of
+// them (over a circle, the mean of max(|cos|, |sin|) against that of
+// |cos| + |sin|).
+double step_bound_clocks(const models::MotionCommand& mc, const StepTiming& t) {
+  double steps = 0;
+  for (const int64_t d : mc.delta) steps = std::max(steps, std::fabs(static_cast<double>(d)));
+  if (mc.kind == models::MotionKind::kArc)
+    steps = std::max(steps, 0.707 * static_cast<double>(models::motion_operations(mc)));
+  return steps * static_cast<double>(t.step_len + t.step_space);
+}
+
+// The clocks a run without the profile takes, estimated before it runs:
+// each command at its feed word (operations a clock: feed / 2^FEED_W; 0: the
+// pin's full feed) or at the step/dir stage's rate, whichever is slower.
+// A run beyond --max-clocks is refused before it runs, naming its slowest
+// command's line.
+double estimate_direct_clocks(const PartProgramSetup& setup, const MotionWidths& widths,
+                              int feed_w) {
+  auto src = open_source(setup);
+  MotionCompiler pass(*src, setup.machine, widths, setup.feed_mode, setup.program);
+  const double full = std::ldexp(1.0, feed_w);
+  double clocks = 0, slowest = 0;
+  uint64_t slowest_line = 0;
+  models::MotionCommand mc;
+  while (pass.next(mc)) {
+    const double feed = mc.feed == 0 ? full : std::min(full, static_cast<double>(mc.feed));
+    const double c = std::max(static_cast<double>(models::motion_operations(mc)) * full / feed,
+                              step_bound_clocks(mc, setup.machine.timing));
+    clocks += c;
+    if (c > slowest) slowest = c, slowest_line = pass.info().line;
+  }
+  if (clocks > setup.max_clocks) {
+    const double hz = static_cast<double>(setup.machine.clock_hz);
+    throw cli::UsageError(setup.program + ":" + std::to_string(slowest_line) +
+                          ": the program takes about " + fmt("%.3g", clocks) + " clocks (" +
+                          fmt("%.3g", clocks / hz) + " s at clock_hz " + fmt("%g", hz) +
+                          "), beyond --max-clocks " + fmt("%g", setup.max_clocks) +
+                          "; its slowest move, on this line, " + fmt("%.3g", slowest) +
+                          " clocks at its feed (give a larger --max-clocks to simulate it)");
+  }
+  return clocks;
+}
+
+// A run estimated to take more than two minutes says so before it starts,
+// at the lockstep's rate on motion_top in direct mode on the project's
+// machine (1.8 M clocks/s: docs/data/gcode_bench.json); the progress line
+// then gives the rate measured.
+void announce_long_run(double clocks, uint64_t progress_every) {
+  constexpr double kClocksPerSecond = 1.8e6;
+  if (progress_every == 0 || clocks < 120 * kClocksPerSecond) return;
+  std::fprintf(stderr,
+               "hwinterp gcode: about %s clocks to simulate, ~%s at 1.8 M clocks/s; progress "
+               "every %s clocks (--progress N, 0: none)\n",
+               tb::short_count(clocks).c_str(),
+               tb::short_duration(clocks / kClocksPerSecond).c_str(),
+               tb::short_count(static_cast<double>(progress_every)).c_str());
+}
+
 class PlannedMoves {
  public:
   PlannedMoves(const PartProgramSetup& setup, const tb::VariantSpec& l,
@@ -342,13 +403,13 @@ class PlannedMoves {
       auto src = open_source(setup);
       MotionCompiler pass(*src, setup.machine, widths, setup.feed_mode, setup.program);
       models::MotionCommand mc;
-      while (pass.next(mc)) fn(mc);
+      while (pass.next(mc)) fn(mc, pass);
     };
     uint32_t moved = 0;  // the axes the program moves: their limits set the profile's
     double ops = 0;      // the whole path's engine operations
-    each_command([&](const models::MotionCommand& mc) {
+    each_command([&](const models::MotionCommand& mc, const MotionCompiler&) {
       moved |= motion_moved_axes(mc, l.axes);
-      ops += static_cast<double>(mc.ops);
+      ops += static_cast<double>(models::motion_operations(mc));
     });
     const double hz = static_cast<double>(setup.machine.clock_hz);
     const models::ProfileBuild build = tb::feed_profile_build(hz);
@@ -390,8 +451,32 @@ class PlannedMoves {
           dv / (w * w) > lim.jerk * spu)
         refuse("max_jerk", lim.jerk, dv / (w * w) / spu, "units/s^3");
     }
-    // Every command's limits the profile can keep, before anything runs.
-    each_command([&](const models::MotionCommand& mc) { planner_->check(mc); });
+    // Every command's limits the profile can keep, before anything runs; and
+    // the run's clocks estimated from the plan itself (a planner of its own:
+    // each command's entry, cruise and end levels, models::profile_move_clocks).
+    ProfilePlanner plan(setup.machine, l.axes, build, setup.profile_window, l.feed_w, moved);
+    uint32_t entry = 0;
+    const auto take = [&] {
+      for (ProfileCommand pc; plan.pop(pc); entry = pc.end)
+        estimate_ += models::profile_move_clocks(plan.registers(), build, entry, pc.ops,
+                                                 std::min(pc.target, pc.max), pc.end);
+    };
+    const double level = planner_->registers().level_speed;
+    each_command([&](const models::MotionCommand& mc, const MotionCompiler& pass) {
+      planner_->check(mc);
+      // A programmed feed below one level would run at the level: faster.
+      const double programmed = planner_->programmed_speed(mc);
+      if (programmed < level)
+        throw cli::UsageError(
+            setup.program + ":" + std::to_string(pass.info().line) + ": F" +
+            fmt("%g", pass.move().feed) + " is below the slowest speed of the feed profile at " +
+            "clock_hz " + fmt("%g", hz) + " (one level): F" +
+            fmt("%.3g", pass.move().feed * level / programmed) + " at least on this move");
+      plan.push(mc, pass.info().number == 1 && pass.move().stop_before);
+      take();
+    });
+    plan.finish();
+    take();
     // No run is faster than the whole path as one time-optimal move at the
     // profile's acceleration and jerk and one operation a clock: refuse a
     // program that would take more than the ceiling even so.
@@ -411,6 +496,7 @@ class PlannedMoves {
                                                  setup.program);
   }
   const ProfilePlanner& planner() const { return *planner_; }
+  double estimated_clocks() const { return estimate_; }
   // The next command's move (false: the program ended).
   bool next(tb::ProfileWords& w) {
     ProfileCommand pc;
@@ -433,6 +519,7 @@ class PlannedMoves {
   std::unique_ptr<MoveSource> source_;
   std::unique_ptr<MotionCompiler> compiler_;
   bool finished_ = false;
+  double estimate_ = 0;
 };
 
 // The bus host's source with the profile: the program's commands (feed word
@@ -488,18 +575,18 @@ struct BusSink {
 template <class Cfg, class Src>
 tb::bus::SocRunResult run_soc_of(const std::string& bus, Src& src, BusSink& sink,
                                  const tb::bus::SocSetup& s, const tb::bus::WaitStates& w,
-                                 uint64_t drain, uint64_t max_clocks) {
+                                 const tb::bus::SocRunLimits& limits) {
   using Soc = SocOf<Cfg>;
   if (s.profile) {  // the tops with the feed profile (PROFILE=1)
     if constexpr (Soc::kProfile) {
       if (bus == "axi4lite") {
         tb::bus::AxilShadow<Cfg, 1> hls;
         return tb::bus::run_soc<typename Soc::AxilProf, tb::bus::Axi4LiteMaster, Soc>(
-            src, s, sink, hls, w, drain, max_clocks);
+            src, s, sink, hls, w, limits);
       }
       tb::bus::WbShadow<Cfg, 1> hls;
-      return tb::bus::run_soc<typename Soc::WbProf, tb::bus::WishboneMaster, Soc>(
-          src, s, sink, hls, w, drain, max_clocks);
+      return tb::bus::run_soc<typename Soc::WbProf, tb::bus::WishboneMaster, Soc>(src, s, sink, hls,
+                                                                                  w, limits);
     }
     throw cli::UsageError(
         "--bus --profile: no motion_soc build with the feed profile at these "
@@ -508,11 +595,11 @@ tb::bus::SocRunResult run_soc_of(const std::string& bus, Src& src, BusSink& sink
   if (bus == "axi4lite") {
     tb::bus::AxilShadow<Cfg> hls;
     return tb::bus::run_soc<typename Soc::Axil, tb::bus::Axi4LiteMaster, Soc>(src, s, sink, hls, w,
-                                                                              drain, max_clocks);
+                                                                              limits);
   }
   tb::bus::WbShadow<Cfg> hls;
   return tb::bus::run_soc<typename Soc::Wb, tb::bus::WishboneMaster, Soc>(src, s, sink, hls, w,
-                                                                          drain, max_clocks);
+                                                                          limits);
 }
 
 // The program again, through motion_soc's bus, against the lockstep run.
@@ -554,23 +641,27 @@ BusCompare run_bus(const PartProgramSetup& setup, const tb::VariantSpec& l,
   const tb::bus::WaitStates waits{setup.bus_waits, 1};
   // No step for this long after the last completed command: the end (every
   // step/dir timing twice, and some).
-  const uint64_t drain = 2 * (s.step_len + s.step_space + s.dir_setup + s.dir_hold) + 64;
+  tb::bus::SocRunLimits limits;
+  limits.drain = 2 * (s.step_len + s.step_space + s.dir_setup + s.dir_hold) + 64;
   // The bus adds clocks per command (about 3 per write on AXI4-Lite); a run
   // past this has stalled.
-  const uint64_t max_clocks =
-      4 * lockstep_clocks +
-      64 * (record.done_at().size() + 1) * (16 + 4 * uint64_t{setup.bus_waits}) + 100000;
+  limits.max_clocks = 4 * lockstep_clocks +
+                      64 * (record.done_at().size() + 1) * (16 + 4 * uint64_t{setup.bus_waits}) +
+                      100000;
+  // The lockstep run's clocks are the bus run's estimate: the same commands.
+  limits.progress_every = setup.bench.progress_every;
+  limits.expected_clocks = static_cast<double>(lockstep_clocks);
   tb::bus::SocRunResult r;
   bool found = false;
-#define HWINTERP_RUN_SOC(v)                                                         \
-  if (!found && l.variant == #v) {                                                  \
-    if (moves) {                                                                    \
-      ProfiledSource src{*prog, *moves};                                            \
-      r = run_soc_of<v##_cfg>(setup.bus, src, sink, s, waits, drain, max_clocks);   \
-    } else {                                                                        \
-      r = run_soc_of<v##_cfg>(setup.bus, *prog, sink, s, waits, drain, max_clocks); \
-    }                                                                               \
-    found = true;                                                                   \
+#define HWINTERP_RUN_SOC(v)                                              \
+  if (!found && l.variant == #v) {                                       \
+    if (moves) {                                                         \
+      ProfiledSource src{*prog, *moves};                                 \
+      r = run_soc_of<v##_cfg>(setup.bus, src, sink, s, waits, limits);   \
+    } else {                                                             \
+      r = run_soc_of<v##_cfg>(setup.bus, *prog, sink, s, waits, limits); \
+    }                                                                    \
+    found = true;                                                        \
   }
   HWINTERP_SOC_VARIANTS(HWINTERP_RUN_SOC)
 #undef HWINTERP_RUN_SOC
@@ -736,6 +827,13 @@ PartProgramRun run_part_program(const PartProgramSetup& setup) {
 
   tb::BenchOptions options = setup.bench;
   options.mode = setup.mode;
+  // The run's clocks estimated (the progress line's percent and time left),
+  // with the pauses of a feed hold.
+  options.expected_clocks =
+      moves ? moves->estimated_clocks() : estimate_direct_clocks(setup, widths, l.feed_w);
+  if (moves && setup.hold_at_s >= 0)
+    options.expected_clocks += setup.hold_for_s * static_cast<double>(setup.machine.clock_hz);
+  announce_long_run(options.expected_clocks, options.progress_every);
   options.observer = prog.get();
   options.profile_feed = profile_feed.get();
   tb::bus::LatticeRecord record;
@@ -768,6 +866,7 @@ PartProgramRun run_part_program(const PartProgramSetup& setup) {
   r.contour = prog->max();
   r.visited_points = prog->points();
   r.end_mismatches = prog->end_mismatches();
+  r.estimated_clocks = options.expected_clocks;
   r.kinematics = kinematics_of(prog->kinematics(), setup.machine);
   r.all_rows_written = prog->all_rows_written();
   if (profiled) {
@@ -793,10 +892,12 @@ PartProgramRun run_part_program(const PartProgramSetup& setup) {
       r.profile.hold = {setup.hold_at_s, setup.hold_for_s,
                         h.stopped,       h.speed * hz,
                         h.ops,           static_cast<double>(h.clocks) / hz};
-      if (!h.began)
-        r.profile_failures.push_back("the feed hold at " + fmt("%.6g", setup.hold_at_s) +
-                                     " s came after the program's end");
-      else if (!h.stopped)
+      if (!h.began)  // bad input found by the run: nothing of it is kept
+        throw cli::UsageError("--feed-hold AT: " + fmt("%.6g", setup.hold_at_s) +
+                              " s is after the program's end at " +
+                              fmt("%.6g", static_cast<double>(run->cycles()) / hz) +
+                              " s of the run");
+      if (!h.stopped)
         r.profile_failures.push_back("the feed hold did not bring the path to rest within its " +
                                      fmt("%.6g", setup.hold_for_s) + " s");
     }
@@ -982,6 +1083,7 @@ Json report_json(const PartProgramSetup& setup, const PartProgramRun& run) {
   report["programmed_time_s"] = t.programmed_s;
   report["feed_word_time_s"] = t.programmed_words_s;
   report["simulated_clocks"] = r.cycles;
+  report["estimated_clocks"] = run.estimated_clocks;
   report["simulated_time_s"] =
       static_cast<double>(r.cycles) / static_cast<double>(setup.machine.clock_hz);
   report["clock_hz"] = setup.machine.clock_hz;

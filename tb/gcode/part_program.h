@@ -168,6 +168,7 @@ struct PartProgramRun {
   ContourMax contour;
   uint64_t visited_points = 0;
   std::vector<uint64_t> end_mismatches;  // moves that ended off their rounded programmed end
+  double estimated_clocks = 0;  // the clocks estimated before the run (the progress line's)
   Kinematics kinematics;
   bool all_rows_written = false;  // every move reached the moves CSV
   ProfileReport profile;

@@ -154,17 +154,40 @@ void ProfilePlanner::check_cap(const AxisCap& cap) const {
       "max_accel or max_jerk, or raise clock_hz");
 }
 
+double ProfilePlanner::programmed_speed(const models::MotionCommand& c) const {
+  const double f = build_.clock_hz;
+  return c.feed == 0 ? f : std::min(f, static_cast<double>(c.feed) * f / std::ldexp(1.0, feed_w_));
+}
+
+double ProfilePlanner::speed_cap(const models::MotionCommand& c, const AxisCap& cap) const {
+  double v = cap.v;
+  if (c.kind == models::MotionKind::kLine) return v;
+  // An arc's centripetal acceleration (and, with an S-curve, its jerk) within
+  // the share of the limits the path leaves it.
+  const double r = std::hypot(static_cast<double>(c.center[0]), static_cast<double>(c.center[1]));
+  if (r > 0) {
+    v = std::min(v, std::sqrt((1 - kAccelShare) * accel_ / kAccelShare * r));
+    if (machine_.profile == ProfileKind::kScurve) {
+      v = std::min(v, std::cbrt(0.5 * (1 - kAccelShare) * jerk_ / kAccelShare * r * r));
+      v = std::min(v, 0.5 * (1 - kAccelShare) / kAccelShare * jerk_ * r / (3 * accel_));
+    }
+  }
+  return v;
+}
+
+double ProfilePlanner::planned_speed(const models::MotionCommand& c) const {
+  return std::min(speed_cap(c, axis_cap(c)), programmed_speed(c));
+}
+
 void ProfilePlanner::push(const models::MotionCommand& c, bool stop_before) {
   const AxisCap cap = axis_cap(c);
   check_cap(cap);
   Entry e;
   e.p.ops = models::motion_operations(c);
   const double n = static_cast<double>(e.p.ops);
-  const double f = build_.clock_hz;
   // v: the cap by the machine (without the programmed feed, for the override)
-  double v = cap.v;
-  const double programmed =
-      c.feed == 0 ? f : std::min(f, static_cast<double>(c.feed) * f / std::ldexp(1.0, feed_w_));
+  const double v = speed_cap(c, cap);
+  const double programmed = programmed_speed(c);
   if (c.kind == models::MotionKind::kLine) {
     for (int i = 0; i < axes_; ++i) {
       const double d = static_cast<double>(c.delta[static_cast<size_t>(i)]);
@@ -182,14 +205,6 @@ void ProfilePlanner::push(const models::MotionCommand& c, bool stop_before) {
       const double d = static_cast<double>(c.delta[static_cast<size_t>(i)]);
       if (i != ax[0] && i != ax[1])
         e.s_start[static_cast<size_t>(i)] = e.s_end[static_cast<size_t>(i)] = d / n;
-    }
-    const double r = std::hypot(cx, cy);
-    if (r > 0) {
-      v = std::min(v, std::sqrt((1 - kAccelShare) * accel_ / kAccelShare * r));
-      if (machine_.profile == ProfileKind::kScurve) {
-        v = std::min(v, std::cbrt(0.5 * (1 - kAccelShare) * jerk_ / kAccelShare * r * r));
-        v = std::min(v, 0.5 * (1 - kAccelShare) / kAccelShare * jerk_ * r / (3 * accel_));
-      }
     }
   }
   e.p.target_speed = std::min(v, programmed);

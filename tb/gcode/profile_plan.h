@@ -81,6 +81,12 @@ class ProfilePlanner {
   // cannot be kept by the profile (a max_velocity below one level); push
   // checks each command, a caller may check a whole program before it runs.
   void check(const models::MotionCommand& c) const;
+  // The cruise speed `c` is planned at (operations/s, at 100 % override):
+  // its programmed feed within the caps of its axes and, on an arc, of its
+  // centripetal acceleration and jerk.
+  double planned_speed(const models::MotionCommand& c) const;
+  // Its feed word's speed (operations/s; the clock's for a word of 0).
+  double programmed_speed(const models::MotionCommand& c) const;
   void finish();                  // the program ended
   bool pop(ProfileCommand& out);  // the next planned command, if any is final
 
@@ -100,6 +106,8 @@ class ProfilePlanner {
   };
   AxisCap axis_cap(const models::MotionCommand& c) const;
   void check_cap(const AxisCap& cap) const;  // check()'s refusal, on a cap already taken
+  // `cap` and, on an arc, the centripetal caps: the speed at 100 % override or more.
+  double speed_cap(const models::MotionCommand& c, const AxisCap& cap) const;
   uint32_t brake_level(uint64_t ops, uint32_t next_end) const;
   void plan_back();
 

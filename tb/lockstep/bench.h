@@ -32,6 +32,7 @@
 #include "tb/lockstep/profile_feed.h"
 #include "tb/monitor/stepdir_monitor.h"
 #include "tb/report/frames.h"
+#include "tb/report/progress.h"
 #include "tb/report/step_times.h"
 #include "tb/report/trace.h"
 #include "tb/scoreboard/scoreboard.h"
@@ -229,6 +230,7 @@ class Bench {
   // Closes the trace (FST conversion), the frame file and the path CSV;
   // throws std::runtime_error on failure.
   void close() {
+    progress_.finish();
     if (trace_) trace_->close();
     if (frames_) frames_->close();
     if (step_times_) step_times_->close();
@@ -472,18 +474,24 @@ class Bench {
     r.first_mismatch = m;
   }
 
-  void print_progress() const {
+  void print_progress() {
     const CaseResult& r = results_.back();
-    const double s =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
-    std::fprintf(stderr,
-                 "  [%s %s] cycle %llu: case %zu/%zu '%s', command %llu/%llu, %.0f s, %.3g "
-                 "clocks/s\n",
-                 spec_.variant.c_str(), options_.mode.c_str(),
-                 static_cast<unsigned long long>(cycle_), case_index_ + 1, cases_.size(),
-                 r.name.c_str(), static_cast<unsigned long long>(r.commands),
-                 static_cast<unsigned long long>(r.commands_offered), s,
-                 s > 0 ? static_cast<double>(cycle_) / s : 0.0);
+    std::string what = "case " + std::to_string(case_index_ + 1) + "/" +
+                       std::to_string(cases_.size()) + " '" + r.name + "', " +
+                       std::to_string(r.commands) + " commands done of " +
+                       std::to_string(r.commands_offered) + " taken";
+    // Without an estimate of the clocks: the share of the cases' items
+    // offered, when every case's items are known ahead (no streamed source).
+    double share = -1;
+    size_t total = 0, offered = item_;
+    bool known = true;
+    for (size_t i = 0; i < cases_.size(); ++i) {
+      known = known && !cases_[i].more;
+      total += cases_[i].items.size();
+      if (i < case_index_) offered += cases_[i].items.size();
+    }
+    if (known && total > 0) share = static_cast<double>(offered) / static_cast<double>(total);
+    progress_.print(cycle_, spec_.variant + " " + options_.mode, what, share);
   }
 
   // A row of the path CSV: kind start, target or move (with the move's
@@ -528,7 +536,7 @@ class Bench {
   uint64_t case_start_cycle_ = 0;
   uint64_t budget_ = 0;
   // When the bench was made: the progress line's rate.
-  std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
+  ProgressLine progress_{options_.expected_clocks};
   size_t item_ = 0;
   bool items_left_ = false;     // Case::items or Case::more still has items
   Item<A> streamed_;            // the item pulled from Case::more...

@@ -46,6 +46,9 @@ struct BenchOptions {
   uint64_t trace_window = 0;  // 0: whole run
   // Progress line on stderr every this many clock edges (0: none).
   uint64_t progress_every = 0;
+  // The run's estimated clocks, for the progress line's percent and time
+  // left (0: no estimate).
+  double expected_clocks = 0;
   // Input frames for replay in other simulators (tb/report/frames.h); empty: none.
   std::string frames_path;
   // Their replay testbench; empty: frames_path + ".sv".

@@ -13,7 +13,6 @@ namespace {
 using Profile = HarnessProfile;
 constexpr int kTickClocks = 1 << kProfileTickW;
 constexpr uint64_t kFull = uint64_t(1) << kProfileFeedW;
-constexpr uint64_t kMaxClocks = uint64_t(1) << 36;
 
 }  // namespace
 
@@ -29,9 +28,10 @@ models::ProfileBuild feed_profile_build(double clock_hz) {
 
 ProfileRunResult run_feed_profile(const models::PathLimits& limits, double clock_hz,
                                   const std::vector<ProfileMove>& moves, bool keep_trace,
-                                  const std::vector<OverrideStep>& override) {
+                                  const std::vector<OverrideStep>& override, double max_clocks) {
   ProfileRunResult res;
-  res.regs = models::profile_registers(limits, feed_profile_build(clock_hz));
+  const models::ProfileBuild build = feed_profile_build(clock_hz);
+  res.regs = models::profile_registers(limits, build);
   res.tick_seconds = kTickClocks / clock_hz;
   std::vector<Profile::Command> cmds;
   std::vector<uint64_t> ends;  // cumulative ops at each move's end
@@ -49,10 +49,34 @@ ProfileRunResult run_feed_profile(const models::PathLimits& limits, double clock
         m.target_speed > 0 ? models::profile_level(res.regs, m.target_speed) : res.regs.max_level;
     c.end = std::min<uint32_t>(c.target.to_uint(), models::profile_level(res.regs, m.end_speed));
     c.max = m.max_speed > 0 ? models::profile_level(res.regs, m.max_speed) : res.regs.max_level;
+    if (c.target == 0) {  // a move at level 0 never ends
+      std::ostringstream os;
+      os << "move " << i + 1 << ": its speed "
+         << (m.target_speed > 0 ? m.target_speed : limits.velocity)
+         << " ops/s is below one level of the profile, " << res.regs.level_speed
+         << " ops/s at this clock and these limits";
+      throw std::invalid_argument(os.str());
+    }
     cmds.push_back(c);
     need += m.ops;
     ends.push_back(need);
   }
+  uint32_t entry = 0;
+  for (const Profile::Command& c : cmds) {
+    res.estimated_clocks += models::profile_move_clocks(
+        res.regs, build, entry, c.ops.to_uint64(),
+        c.max == 0 ? c.target.to_uint() : std::min(c.target.to_uint(), c.max.to_uint()),
+        c.end.to_uint());
+    entry = c.end.to_uint();
+  }
+  if (res.estimated_clocks > max_clocks) {
+    std::ostringstream os;
+    os << "the moves take about " << res.estimated_clocks << " clocks ("
+       << res.estimated_clocks / clock_hz << " s) at this clock and these limits, beyond the "
+       << "ceiling of " << max_clocks << " clocks (--max-clocks)";
+    throw std::invalid_argument(os.str());
+  }
+  const uint64_t ceiling = static_cast<uint64_t>(std::min(max_clocks, 1e18));
   Profile p;
   p.reset();
   size_t sent = 0, done_moves = 0;
@@ -62,7 +86,7 @@ ProfileRunResult run_feed_profile(const models::PathLimits& limits, double clock
   int seen = 0;
   size_t ovr_next = 0;
   unsigned ovr = Profile::kOvrOne;
-  for (uint64_t clk = 0; clk < kMaxClocks; ++clk) {
+  for (uint64_t clk = 0; clk < ceiling; ++clk) {
     if (clk % kTickClocks == 0) {
       const double v = static_cast<double>(p.state().v) * to_speed;
       if (keep_trace) res.tick_speed.push_back(v);
@@ -97,8 +121,8 @@ ProfileRunResult run_feed_profile(const models::PathLimits& limits, double clock
   }
   if (res.rest_clock == 0) {
     std::ostringstream os;
-    os << "the profile did not finish within 2^36 clocks (" << res.ops << " of " << need
-       << " ops taken)";
+    os << "the profile did not finish within " << ceiling << " clocks (" << res.ops << " of "
+       << need << " ops taken; estimated " << res.estimated_clocks << ")";
     throw std::runtime_error(os.str());
   }
   return res;

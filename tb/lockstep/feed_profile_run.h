@@ -33,13 +33,17 @@ struct ProfileRunResult {
   std::vector<double> tick_speed;
   double peak_speed = 0, peak_accel = 0, peak_jerk = 0;
   double tick_seconds = 0;
+  double estimated_clocks = 0;  // the clocks estimated before the run
 };
 
-// Throws std::invalid_argument (naming the value) for bad limits or moves.
+// Throws std::invalid_argument (naming the value) for bad limits or moves,
+// and when the moves would take more than `max_clocks` (estimated before the
+// run: models::profile_move_clocks); std::runtime_error when the run passes it.
 // `override`: the feed override's steps (ovr_i, hls/feed_profile.h) in clock
 // order; none: 100 %.
 ProfileRunResult run_feed_profile(const models::PathLimits& limits, double clock_hz,
                                   const std::vector<ProfileMove>& moves, bool keep_trace,
-                                  const std::vector<OverrideStep>& override = {});
+                                  const std::vector<OverrideStep>& override = {},
+                                  double max_clocks = 1e11);
 
 }  // namespace hwinterp::tb

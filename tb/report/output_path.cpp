@@ -56,6 +56,16 @@ OutputFiles::Identity OutputFiles::identity(const std::string& path) {
   return {0, 0, path};  // no directory: stage() refuses it
 }
 
+OutputFiles::Identity OutputFiles::distinct(const std::string& path) const {
+  const Identity id = identity(path);
+  if (const File* f = same_as(id))
+    throw std::runtime_error("'" + path + "' is also " + (f->output ? "the output " : "") +
+                             f->what +
+                             (f->output ? ": give each output its own file"
+                                        : ": the run would overwrite what it reads"));
+  return id;
+}
+
 const OutputFiles::File* OutputFiles::same_as(const Identity& id) const {
   for (const File& f : files_)
     if (!f.scratch && f.id == id) return &f;
@@ -124,12 +134,7 @@ std::string OutputFiles::stage(const std::string& what, const std::string& path)
     files_.push_back(f);
     return path;
   }
-  const Identity id = identity(path);
-  if (const File* f = same_as(id))
-    throw std::runtime_error("'" + path + "' is also " + (f->output ? "the output " : "") +
-                             f->what +
-                             (f->output ? ": give each output its own file"
-                                        : ": the run would overwrite what it reads"));
+  const Identity id = distinct(path);
   // A symbolic link stays: the file it names is replaced.
   std::string target = path;
   if (lstat(path.c_str(), &st) == 0 && S_ISLNK(st.st_mode)) {
@@ -141,6 +146,14 @@ std::string OutputFiles::stage(const std::string& what, const std::string& path)
   File f{what, target, make_temporary(target), id};
   files_.push_back(f);
   return f.temporary;
+}
+
+void OutputFiles::live(const std::string& what, const std::string& path) {
+  check_writable(path);
+  const Identity id = distinct(path);
+  File f{what, path, path, id};
+  f.in_place = true;
+  files_.push_back(f);
 }
 
 std::string OutputFiles::temporary(const std::string& what) const {

@@ -44,6 +44,11 @@ class OutputFiles {
   // run writes to it directly, nothing is renamed onto it.
   std::string stage(const std::string& what, const std::string& path);
 
+  // Registers `path` as the output `what` that the run writes in place while
+  // others read it (board-sim's URI file and logs): throws as stage does when
+  // it is the same file as an input or another output, or cannot be written.
+  void live(const std::string& what, const std::string& path);
+
   // The temporary of the output `what` (as stage returned it); "" if none.
   std::string temporary(const std::string& what) const;
 
@@ -82,6 +87,8 @@ class OutputFiles {
   static bool written_in_place(const std::string& path);
   std::string make_temporary(const std::string& path);
   const File* same_as(const Identity& id) const;
+  // The identity of `path`, an output to be; throws naming the file it would be the same as.
+  Identity distinct(const std::string& path) const;
 
   std::vector<File> files_;
   mode_t umask_ = 022;

@@ -13,7 +13,10 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <cctype>
+#include <cmath>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -274,6 +277,52 @@ TEST(CliMessages, MachineValuesAreNamedByTheirKey) {
     EXPECT_EQ(r.code, 2) << c.to << "\n" << r.out << r.err;
     EXPECT_NE(r.err.find(c.named), std::string::npos) << c.to << ": " << r.err;
   }
+}
+
+// A long run says how far it is: the progress line gives the percent of the
+// clocks estimated before the run and the time left, and the estimate is
+// close to the real count (without the profile each command at its feed
+// word or the step/dir stage's rate; with it the plan's levels).
+TEST(CliProgress, GcodeGivesThePercentOfItsEstimateAndTheTimeLeft) {
+  const std::string d = scratch_dir("progress");
+  const std::string data = std::string(HWINTERP_SOURCE_DIR) + "/tests/data/gcode/";
+  struct Case {
+    std::string args;
+    double tolerance;  // of the estimate, relative
+  };
+  const std::vector<Case> cases = {
+      {"words.ngc --machine " + data + "machine_default.json", 0.01},
+      {"words.ngc --feed programmed --machine " + data + "machine_profile.json", 0.05},
+  };
+  for (const Case& c : cases) {
+    const CliResult r = run_hwinterp(
+        "gcode " + data + c.args + " --mode direct --progress 100000 " + "--json " + d + "/r.json");
+    ASSERT_EQ(r.code, 0) << c.args << "\n" << r.out << r.err;
+    EXPECT_NE(r.err.find(" % of ~"), std::string::npos) << c.args << ": " << r.err;
+    EXPECT_NE(r.err.find(" left)"), std::string::npos) << c.args << ": " << r.err;
+    const auto j = nlohmann::json::parse(slurp(d + "/r.json"));
+    const double estimated = j.at("estimated_clocks").get<double>();
+    const double simulated = j.at("simulated_clocks").get<double>();
+    EXPECT_LT(std::fabs(estimated - simulated), c.tolerance * simulated)
+        << c.args << ": estimated " << estimated << ", simulated " << simulated;
+  }
+}
+
+// The bus run of `gcode --bus` gives its percent of the lockstep run's clocks
+// (the same commands), and `cosim` the percent of its cases' commands.
+TEST(CliProgress, BusRunsAndCosimGiveTheirPercent) {
+  const std::string data = std::string(HWINTERP_SOURCE_DIR) + "/tests/data/gcode/";
+  const CliResult bus =
+      run_hwinterp("gcode " + data + "words.ngc --machine " + data +
+                   "machine_default.json --mode direct --bus wishbone " + "--progress 100000");
+  ASSERT_EQ(bus.code, 0) << bus.out << bus.err;
+  const size_t line = bus.err.find("[motion_soc bus]");
+  ASSERT_NE(line, std::string::npos) << bus.err;
+  EXPECT_NE(bus.err.find(" % of ~", line), std::string::npos) << bus.err;
+  const CliResult cosim =
+      run_hwinterp("cosim --core dda_line --mode direct --random 200 --seed 3 --progress 20000");
+  ASSERT_EQ(cosim.code, 0) << cosim.out << cosim.err;
+  EXPECT_NE(cosim.err.find(" % of the commands, ~"), std::string::npos) << cosim.err;
 }
 
 }  // namespace
