@@ -4,13 +4,14 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "models/common.h"
+
 namespace hwinterp::models {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // Modified sine, in the reading that reproduces paper 000's tables
-// (docs/papers.md; the paper's Appendix B formula was lost in extraction). The three pieces meet with continuous S, S', S''.
+// (docs/papers.md; the paper's Appendix B formula was lost in extraction). The three pieces meet
+// with continuous S, S', S''.
 CamLawValue modified_sine(double T) {
   const double d = 4 + kPi;
   if (T <= 0.125) {

@@ -5,13 +5,9 @@
 #include <cstdlib>
 #include <stdexcept>
 
-namespace hwinterp::models {
+#include "models/common.h"
 
-namespace {
-uint64_t magnitude(int64_t v) {
-  return v < 0 ? uint64_t{0} - static_cast<uint64_t>(v) : static_cast<uint64_t>(v);
-}
-}  // namespace
+namespace hwinterp::models {
 
 int dda_exponent(const std::vector<int64_t>& delta) {
   uint64_t m = 0;

@@ -5,15 +5,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "models/common.h"
+
 namespace hwinterp::models {
 
 namespace {
 
 using u128 = unsigned __int128;
-
-uint64_t magnitude(int64_t v) {
-  return v < 0 ? uint64_t{0} - static_cast<uint64_t>(v) : static_cast<uint64_t>(v);
-}
 
 void check_frac_w(int frac_w, const char* who) {
   if (frac_w < 1 || frac_w > 62)

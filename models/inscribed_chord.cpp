@@ -8,11 +8,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "models/common.h"
+
 namespace hwinterp::models {
 
 namespace {
 
-constexpr double kTwoPi = 6.28318530717958647692;
 constexpr size_t kMaxChords = 10'000'000;
 
 void check_r(double r) {

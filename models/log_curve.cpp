@@ -5,11 +5,12 @@
 #include <stdexcept>
 #include <string>
 
+#include "models/common.h"
+
 namespace hwinterp::models {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 double rad(double deg) { return deg * kPi / 180.0; }
 
 std::string num(double v) {

@@ -3,12 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "models/common.h"
+
 namespace hwinterp::models {
 
 namespace {
 
 using u128 = unsigned __int128;
-constexpr double kPi = 3.14159265358979323846;
 
 uint64_t word(double v, const LogFixedFormat& f) {
   return static_cast<uint64_t>(std::llround(std::ldexp(v, f.frac_w)));

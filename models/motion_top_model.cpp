@@ -5,13 +5,11 @@
 #include <string>
 #include <vector>
 
+#include "models/common.h"
+
 namespace hwinterp::models {
 
 namespace {
-
-uint64_t magnitude(int64_t v) {
-  return v < 0 ? uint64_t{0} - static_cast<uint64_t>(v) : static_cast<uint64_t>(v);
-}
 
 [[noreturn]] void reject(const std::string& what) {
   throw std::invalid_argument("motion_top: " + what);

@@ -8,11 +8,12 @@
 #include <string>
 #include <vector>
 
+#include "models/common.h"
+
 namespace hwinterp::models {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr double kPi = 3.14159265358979323846;
 
 // Local geometry at one parameter, oriented to the interval: n points towards
 // the centre of curvature and k >= 0 is the curvature about it.

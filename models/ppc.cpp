@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "models/common.h"
+
 namespace hwinterp::models {
 
 namespace {
@@ -265,9 +267,7 @@ StepPath ppc_arc(const LatticePoint& center, const LatticePoint& start, const La
 
 // --- ideal spiral and error -------------------------------------------------------
 
-namespace {
-constexpr double kTwoPi = 6.283185307179586476925286766559;
-}
+namespace {}
 
 PpcArcIdeal::PpcArcIdeal(const LatticePoint& center, const LatticePoint& start,
                          const LatticePoint& end, bool ccw)

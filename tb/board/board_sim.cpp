@@ -5,6 +5,8 @@
 #include <fstream>
 #include <iostream>
 
+#include "models/common.h"
+
 namespace hwinterp::board {
 
 std::atomic<bool>& board_sim_stop() {
@@ -14,7 +16,7 @@ std::atomic<bool>& board_sim_stop() {
 
 namespace {
 void on_signal(int) { board_sim_stop().store(true); }
-constexpr const char* kLetters = "XYZABC";
+constexpr const char* kLetters = models::kAxisLetters;
 constexpr size_t kKeptViolations = 20;
 }  // namespace
 

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "models/cam_profile.h"
+#include "models/common.h"
 #include "models/nishioka.h"
 #include "models/optimal_linear.h"
 #include "models/polyline_verifier.h"
@@ -18,10 +19,10 @@
 
 namespace hwinterp::cli {
 namespace {
+using models::kPi;
 
 using models::Vec2;
 
-constexpr double kPi = 3.14159265358979323846;
 // The verifier's own rounding: it finds feet of normals to ~1e-13 mm, and
 // the paper's first stopping rule may leave the last segment ~1e-10 mm over.
 constexpr double kVerifySlack = 1e-9;

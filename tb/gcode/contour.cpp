@@ -3,12 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "models/common.h"
+
 namespace hwinterp::gcode {
 
 namespace {
-
-constexpr double kTwoPi = 6.283185307179586476925286766559;
-constexpr double kPi = kTwoPi / 2;
+using models::kPi;
+using models::kTwoPi;
 
 using Vec = std::array<double, 6>;
 

@@ -3,11 +3,11 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "models/common.h"
+
 namespace hwinterp::gcode {
 
-namespace {
-constexpr double kTwoPi = 6.283185307179586476925286766559;
-}
+using models::kTwoPi;
 
 Helix::Helix(const std::array<double, 6>& start, const Move& arc) : s_(start), e_(arc.end) {
   const PlaneAxes pa = plane_axes(arc.plane);

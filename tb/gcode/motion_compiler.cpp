@@ -6,24 +6,22 @@
 #include <optional>
 #include <sstream>
 
+#include "models/common.h"
 #include "tb/base/args.h"
 #include "tb/gcode/helix.h"
 
 namespace hwinterp::gcode {
 
 namespace {
+using models::kPi;
+using models::kTwoPi;
+using models::magnitude;
 
-constexpr double kPi = 3.14159265358979323846;
-constexpr double kTwoPi = 2 * kPi;
 constexpr double kMaxPieceSweep = 1.5 * kPi;     // arc pieces: no end near its start
 constexpr double kSweepTolerance = kPi / 4;      // rule M's sweep against the programmed one
 constexpr double kSagitta = 0.4;                 // steps: a chord's ideal error, below 0.5
 constexpr int64_t kPpcLimit = int64_t{1} << 29;  // PPC model: |v| < 2^30 for v and e - c
 constexpr double kLatticeLimit = 4611686018427387904.0;  // 2^62
-
-uint64_t magnitude(int64_t v) {
-  return v < 0 ? uint64_t{0} - static_cast<uint64_t>(v) : static_cast<uint64_t>(v);
-}
 
 int64_t signed_max(int bits) { return (int64_t{1} << (bits - 1)) - 1; }
 
@@ -144,9 +142,10 @@ MotionCompiler::MotionCompiler(MoveSource& source, const Machine& machine,
                             " is outside [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
   };
   range("AXES", widths.axes, 3, models::kMotionMaxAxes);
-  range("ACC_W", widths.acc_w, 3, 63);
-  range("COORD_W", widths.coord_w, 2, 63);
-  range("OPS_W", widths.ops_w, 1, 63);
+  // rtl/motion_top.sv's ranges, which it checks at elaboration.
+  range("ACC_W", widths.acc_w, 4, 62);
+  range("COORD_W", widths.coord_w, 3, 60);
+  range("OPS_W", widths.ops_w, 1, widths.acc_w - 1);
   range("FEED_W", widths.feed_w, 1, 31);
   if (!(options.arc_tolerance_steps > 0))
     throw cli::UsageError("arc tolerance " + number(options.arc_tolerance_steps) +

@@ -116,9 +116,9 @@ namespace hwinterp::gcode {
 // The core's widths (motion_top's parameters).
 struct MotionWidths {
   int axes = 4;      // AXES: machine axes X Y Z A ... in that order, 3..6
-  int acc_w = 32;    // ACC_W: signed line delta (and slaved delta) width, 3..63
-  int coord_w = 24;  // COORD_W: signed arc coordinate width, 2..63
-  int ops_w = 32;    // OPS_W: arc operation count width, 1..63
+  int acc_w = 32;    // ACC_W: signed line delta (and slaved delta) width, 4..62
+  int coord_w = 24;  // COORD_W: signed arc coordinate width, 3..60
+  int ops_w = 31;    // OPS_W: arc operation count width, 1..ACC_W - 1
   int feed_w = 16;   // FEED_W: feed word fraction bits, 1..31
 };
 

@@ -15,6 +15,8 @@
 #include <map>
 #include <string>
 
+#include "models/common.h"
+
 namespace hwinterp::gcode {
 
 constexpr double kMmPerInch = 25.4;  // exact, by definition
@@ -25,7 +27,7 @@ enum class Plane { kXY, kYZ, kXZ };              // G17 / G19 / G18 (LinuxCNC's 
 // Axis indices into Move::end.
 enum Axis { kX = 0, kY = 1, kZ = 2, kA = 3, kB = 4, kC = 5 };
 constexpr int kAxes = 6;
-constexpr const char* kAxisNames = "XYZABC";
+constexpr const char* kAxisNames = models::kAxisLetters;
 
 // One motion command.
 struct Move {

@@ -2,10 +2,12 @@
 
 #include <stdexcept>
 
+#include "models/common.h"
+
 namespace hwinterp::tb {
 
 namespace {
-constexpr const char* kLetters = "XYZABC";
+constexpr const char* kLetters = models::kAxisLetters;
 constexpr int kMaxAxes = 6;
 }  // namespace
 

@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <string>
 
+#include "models/common.h"
 #include "models/log_curve.h"
 #include "models/log_stepper_model.h"
 #include "models/paper_data_001_003_004.h"
@@ -18,6 +19,7 @@
 
 namespace hwinterp::cli {
 namespace {
+using models::kPi;
 
 namespace pd = models::paper;
 using models::EvenStep;
@@ -56,7 +58,7 @@ PaperReproduction reproduce_log() {
 
   // The hardware: the paper's curve on log_stepper at 1000 steps/mm and
   // 1000 steps/deg; its coarse points where their segments end.
-  constexpr double kSteps = 1000, kPi = 3.14159265358979323846;
+  constexpr double kSteps = 1000;
   const HardwareRun hw = run_hardware("log_stepper", "curve 10 30 5 8 0.2 30 1000 1000\n");
   const auto& pts = hw.result.checkpoints;
   models::LogStepScale scale;

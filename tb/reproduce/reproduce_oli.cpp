@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "models/cam_profile.h"
+#include "models/common.h"
 #include "models/nishioka.h"
 #include "models/optimal_linear.h"
 #include "models/polyline_verifier.h"
@@ -16,10 +17,10 @@
 
 namespace hwinterp::cli {
 namespace {
+using models::kPi;
 
 using models::CamLaw;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kVerifySlack = 1e-9;  // mm: the verifier may exceed e by this (docs/papers.md)
 
 struct Table1Row {

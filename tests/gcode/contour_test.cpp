@@ -8,12 +8,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "models/common.h"
 #include "tb/gcode/helix.h"
 
 namespace hwinterp::gcode {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
+using models::kPi;
 
 Move line_to(std::array<double, 6> end) {
   Move m;

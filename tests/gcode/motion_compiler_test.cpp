@@ -16,17 +16,17 @@
 #include <vector>
 
 #include "gcode_test_util.h"
+#include "models/common.h"
 #include "models/motion_top_model.h"
 #include "tb/gcode/contour.h"
 #include "tb/gcode/program_file.h"
 
 namespace hwinterp::gcode {
 namespace {
+using models::kPi;
 
 using models::MotionCommand;
 using models::MotionKind;
-
-constexpr double kPi = 3.14159265358979323846;
 
 std::string data(const std::string& name, const char* ext) {
   return std::string(HWINTERP_GCODE_DATA) + "/" + name + ext;
@@ -401,6 +401,7 @@ TEST(MotionCompiler, ATinyArcRoundingOntoItsStartIsNotAFullCircle) {
 TEST(MotionCompiler, LongLinesSplitIntoPiecesRoundedFromTheLine) {
   MotionWidths w;
   w.acc_w = 12;  // |delta| <= 2047
+  w.ops_w = 11;  // at most ACC_W - 1, as rtl/motion_top.sv takes it
   const Compiled c = compile_text("G1 X10 Y3.3333 Z-0.5 F600\nM2\n", Machine{}, w);
   // D = 10 000 steps: k = ceil(10 001 / 2046) = 5 pieces.
   ASSERT_EQ(c.commands.size(), 5u);
@@ -603,7 +604,7 @@ TEST(MotionCompiler, RandomProgramsEndOnEveryMoveAndStayNearThePath) {
   MotionWidths narrow;
   narrow.acc_w = 14;
   narrow.coord_w = 15;
-  narrow.ops_w = 16;
+  narrow.ops_w = 13;  // at most ACC_W - 1, as rtl/motion_top.sv takes it
   const RandomCase cases[] = {
       {"default", {1000, 1000, 1000, 100, 100, 100}, MotionWidths{}},
       {"coarse", {80, 80, 200, 10, 10, 10}, MotionWidths{}},

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
+#include "models/common.h"
 #include "tb/stimulus/stimulus.h"
 
 namespace hwinterp::tb::cores::log_stepper {
@@ -12,8 +13,7 @@ namespace hwinterp::tb::cores::log_stepper {
 using cli::UsageError;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
+using models::kPi;
 
 double steps_per_rad(const models::LogStepScale& s) { return s.a_per_deg * 180 / kPi; }
 

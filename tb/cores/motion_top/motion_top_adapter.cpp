@@ -7,6 +7,7 @@
 
 #include <sstream>
 
+#include "models/common.h"
 #include "tb/cores/delta_payload.h"
 #include "tb/stimulus/stimulus.h"
 
@@ -17,8 +18,7 @@ using models::MotionCommand;
 using models::MotionKind;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
+using models::kPi;
 
 int64_t signed_max(int w) { return (int64_t{1} << (w - 1)) - 1; }
 

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 
+#include "models/common.h"
 #include "tb/stimulus/stimulus.h"
 
 namespace hwinterp::tb::cores::ppc_arc {
@@ -11,8 +12,7 @@ namespace hwinterp::tb::cores::ppc_arc {
 using cli::UsageError;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
+using models::kPi;
 
 models::PpcArcStream relative_stream(const Adapter::Command& c) {
   return models::PpcArcStream({c.center[0], c.center[1]}, {0, 0}, {c.end[0], c.end[1]}, c.ccw);
