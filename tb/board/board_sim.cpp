@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "models/common.h"
+#include "tb/report/progress.h"
 
 namespace hwinterp::board {
 
@@ -142,11 +143,16 @@ Json BoardRun::report(const Json& link, double seconds, uint64_t clocks) const {
               {"watchdog_bites", bites}};
 }
 
-void board_sim_progress(const std::string& board, uint64_t clock, uint64_t sys_hz, double wall) {
+void board_sim_progress(const std::string& board, uint64_t clock, uint64_t sys_hz, double wall,
+                        double share) {
+  std::string bound;
+  if (share > 0 && share <= 1)
+    bound = " (" + std::to_string(static_cast<int>(100 * share)) + " % of its bound, ~" +
+            tb::short_duration(wall * (1 - share) / share) + " left)";
   std::fprintf(stderr,
-               "board-sim %s: %.3f s of board time (%llu clocks) in %.1f s, %.2f M clocks/s\n",
+               "board-sim %s: %.3f s of board time (%llu clocks) in %.1f s%s, %.2f M clocks/s\n",
                board.c_str(), static_cast<double>(clock) / static_cast<double>(sys_hz),
-               static_cast<unsigned long long>(clock), wall,
+               static_cast<unsigned long long>(clock), wall, bound.c_str(),
                wall > 0 ? static_cast<double>(clock) / wall / 1e6 : 0.0);
 }
 

@@ -18,6 +18,7 @@
 // rtl/CMakeLists.txt): its Verilated top and how to read it.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cstdint>
@@ -193,11 +194,17 @@ class BoardSim {
   std::unique_ptr<Top> top_;
 };
 
-void board_sim_progress(const std::string& board, uint64_t clock, uint64_t sys_hz, double wall);
+// A progress line; `share` (0..1; negative: the run has no bound) is how
+// far the run is towards --max-clocks or --max-seconds, whichever is nearer.
+void board_sim_progress(const std::string& board, uint64_t clock, uint64_t sys_hz, double wall,
+                        double share);
 
 template <class Cfg>
 void BoardSim<Cfg>::progress(uint64_t clock, double wall) const {
-  board_sim_progress(Cfg::kBoard, clock, Cfg::kSysHz, wall);
+  double share = -1;
+  if (o_.max_clocks) share = static_cast<double>(clock) / static_cast<double>(o_.max_clocks);
+  if (o_.max_seconds > 0) share = std::max(share, wall / o_.max_seconds);
+  board_sim_progress(Cfg::kBoard, clock, Cfg::kSysHz, wall, share);
 }
 
 }  // namespace hwinterp::board

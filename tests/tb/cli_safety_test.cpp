@@ -325,5 +325,14 @@ TEST(CliProgress, BusRunsAndCosimGiveTheirPercent) {
   EXPECT_NE(cosim.err.find(" % of the commands, ~"), std::string::npos) << cosim.err;
 }
 
+// board-sim, bounded by --max-clocks, says how far towards it the run is.
+TEST(CliProgress, BoardSimGivesItsShareOfItsBound) {
+  const CliResult r = run_hwinterp(
+      "board-sim --board colorlight_5a_75b --clock-hz 1000000 --no-profile --max-clocks 6000000 "
+      "--progress 1");
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  EXPECT_NE(r.err.find(" % of its bound, ~"), std::string::npos) << r.err;
+}
+
 }  // namespace
 }  // namespace hwinterp::testing
