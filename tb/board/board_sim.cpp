@@ -145,10 +145,7 @@ Json BoardRun::report(const Json& link, double seconds, uint64_t clocks) const {
 
 void board_sim_progress(const std::string& board, uint64_t clock, uint64_t sys_hz, double wall,
                         double share) {
-  std::string bound;
-  if (share > 0 && share <= 1)
-    bound = " (" + std::to_string(static_cast<int>(100 * share)) + " % of its bound, ~" +
-            tb::short_duration(wall * (1 - share) / share) + " left)";
+  const std::string bound = tb::share_text(share, wall, "its bound");
   std::fprintf(stderr,
                "board-sim %s: %.3f s of board time (%llu clocks) in %.1f s%s, %.2f M clocks/s\n",
                board.c_str(), static_cast<double>(clock) / static_cast<double>(sys_hz),

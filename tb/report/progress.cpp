@@ -30,6 +30,15 @@ std::string short_duration(double seconds) {
   return buf;
 }
 
+std::string share_text(double share, double seconds, const std::string& of) {
+  if (!(share > 0 && share <= 1)) return "";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, " (%.0f %% of ", 100 * share);
+  std::string text = buf + of;
+  if (share < 1) text += ", ~" + short_duration(seconds * (1 - share) / share) + " left";
+  return text + ")";
+}
+
 ProgressLine::ProgressLine(double expected_clocks)
     : expected_(expected_clocks > 0 ? expected_clocks : 0),
       tty_(isatty(STDERR_FILENO) == 1),
@@ -53,12 +62,8 @@ void ProgressLine::print(uint64_t clock, const std::string& who, const std::stri
     } else {
       line += " (beyond the estimate of ~" + short_count(expected_) + ")";
     }
-  } else if (share > 0 && share <= 1) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, " (%.0f %% of the commands", 100 * share);
-    line += buf;
-    if (share < 1) line += ", ~" + short_duration(s * (1 - share) / share) + " left";
-    line += ")";
+  } else {
+    line += share_text(share, s, "the commands");
   }
   line += ", " + short_count(rate) + " clocks/s, " + short_duration(s);
   if (!what.empty()) line += ", " + what;

@@ -34,5 +34,8 @@ class ProgressLine {
 std::string short_count(double n);
 // "45 s", "12 min", "3.4 h": a duration for a progress line.
 std::string short_duration(double seconds);
+// " (37 % of OF, ~12 s left)" for a run `share` (0..1] of the way through
+// after `seconds`; "" for a share outside it.
+std::string share_text(double share, double seconds, const std::string& of);
 
 }  // namespace hwinterp::tb
