@@ -175,7 +175,7 @@ endfunction()
 # --clock-hz <hz>): its gateware at another clock (and UART rate), so that
 # whole programs simulate in less time than at the board's own clock. Every
 # board has one at its own clock; cmake/cores.cmake adds others, and the
-# cache variable HWINTERP_EXTRA_BOARD_SIMS (BOARD:HZ[:BAUD];...) more
+# cache variable HWINTERP_EXTRA_BOARD_SIMS (BOARD:HZ[:BAUD][:noprofile];...) more
 # (scripts/board_sim.sh sets it). NO_PROFILE builds it with PROFILE = 0
 # (FEED drives the feed; board-sim --no-profile), named <board>_<hz>_noprofile.
 function(hwinterp_board_sim)

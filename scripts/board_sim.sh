@@ -14,6 +14,8 @@
 #                  minutes
 #   --baud B       with --clock-hz on a UART board: its rate (at least 8
 #                  clocks a bit; default the board's)
+#   --no-profile   the build without the feed profile (added, as above, when
+#                  the build does not hold it at that clock)
 # Other options go to hwinterp board-sim (--faults, --json, --steps-csv,
 # --realtime, ...; `hwinterp board-sim --help`).
 # Example: scripts/board_sim.sh colorlight_5a_75b --clock-hz 1000000
@@ -27,11 +29,13 @@ board=$1
 shift
 hz=""
 baud=""
+noprofile=""
 rest=()
 while [ $# -gt 0 ]; do
   case "$1" in
     --clock-hz) [ $# -ge 2 ] || usage; hz=$2; shift 2 ;;
     --baud) [ $# -ge 2 ] || usage; baud=$2; shift 2 ;;
+    --no-profile) noprofile=1; rest+=("$1"); shift ;;
     *) rest+=("$1"); shift ;;
   esac
 done
@@ -43,9 +47,19 @@ if [ -n "$baud" ] && { [ -z "$hz" ] || ! [[ "$baud" =~ ^[1-9][0-9]*$ ]]; }; then
 fi
 "$root/scripts/build.sh"
 hwinterp=$build/tb/hwinterp
-if [ -n "$hz" ] && ! "$hwinterp" board-sim --list | grep -q "^$board $hz "; then
+# A build at that clock (without the profile, with --no-profile) not held yet is added.
+held() {
+  local builds
+  builds=$("$hwinterp" board-sim --list | grep "^$board $hz " || true)
+  if [ -n "$noprofile" ]; then
+    grep -q " no-profile$" <<<"$builds"
+  else
+    grep -q -v " no-profile$" <<<"$builds"
+  fi
+}
+if [ -n "$hz" ] && ! held; then
   extra=$(cmake -L -N "$build" 2>/dev/null | sed -n 's/^HWINTERP_EXTRA_BOARD_SIMS:STRING=//p')
-  entry="$board:$hz${baud:+:$baud}"
+  entry="$board:$hz${baud:+:$baud}${noprofile:+:noprofile}"
   extra="${extra:+$extra;}$entry"
   echo "board_sim: adding $board at $hz Hz to the build (HWINTERP_EXTRA_BOARD_SIMS=$extra)" >&2
   "$root/scripts/build.sh" "-DHWINTERP_EXTRA_BOARD_SIMS=$extra"

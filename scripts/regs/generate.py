@@ -17,6 +17,7 @@ and from the board's map (rtl/regs/board.rdl, compiled with motion_soc.rdl
 and link_guard.rdl: motion_soc and the link's sequence guard on a board's
 bus):
   sw/host/hwinterp_host/gen/regs.py     the host package's register map (scripts/regs/py_model.py)
+  sw/board_regs.h                       the board's C header (PeakRDL-cheader: the HAL driver's addresses)
   docs/board_regs.md                    the board's register page (PeakRDL-markdown)
 
 Both register blocks: asynchronous active-low reset, an error response on an
@@ -56,6 +57,7 @@ OUTPUTS = {
     "cpp": "hls/gen/motion_soc_regs.h",
     "py": "sw/host/hwinterp_host/gen/regs.py",
     "board_markdown": "docs/board_regs.md",
+    "board_cheader": "sw/board_regs.h",
 }
 ME = "scripts/regs/generate.py"
 
@@ -159,6 +161,10 @@ def generate(out_dir, rdl_rel):
                                  generator=f"{ME} (scripts/regs/py_model.py)")
         with open(ppath) as f:
             files["py"] = f.read()
+        bhpath = os.path.join(tmp, "board_regs.h")
+        CHeaderExporter().export(board, bhpath)
+        with open(bhpath) as f:
+            files["board_cheader"] = stamp("//", ", ".join(BOARD_RDL)) + f.read()
         bpath = os.path.join(tmp, "board.md")
         MarkdownExporter().export(board, bpath, input_files=list(BOARD_RDL))
         with open(bpath) as f:

@@ -1,0 +1,352 @@
+// The LinuxCNC driver's servo without a board (sw/hal/hwinterp_servo.h):
+// the lattice, the period's line and its feed word, the Etherbone records it
+// writes, the boundaries and the packet window. tests/hal/test_servo_board.py
+// runs the same code against the simulated board.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <map>
+#include <vector>
+
+extern "C" {
+#include "../../sw/board_regs.h"
+#include "hwinterp_servo.h"
+}
+
+namespace {
+
+uint32_t be32(const uint8_t* p) {
+  return uint32_t{p[0]} << 24 | uint32_t{p[1]} << 16 | uint32_t{p[2]} << 8 | p[3];
+}
+
+constexpr uint32_t kMotion = offsetof(hwinterp_board_t, motion);
+uint32_t motion(size_t off) { return static_cast<uint32_t>(kMotion + off); }
+
+// A guarded packet read back: its SEQ, the bus writes its stream makes (in
+// order), its reads and its tag.
+struct Decoded {
+  uint32_t seq = 0, tag = 0;
+  std::vector<std::pair<uint32_t, uint32_t>> writes;  // byte address, value
+  std::vector<uint32_t> reads;
+};
+
+Decoded decode(const uint8_t* p, size_t len) {
+  Decoded d;
+  EXPECT_GE(len, 12u);
+  EXPECT_EQ(be32(p) >> 16, 0x4E6Fu);
+  EXPECT_EQ(p[3], 0x44);
+  const uint32_t nw = p[10], nr = p[11];
+  EXPECT_EQ(len, 12 + (nw ? 4 + 4 * nw : 0) + (nr ? 4 + 4 * nr : 0));
+  const uint8_t* q = p + 12;
+  EXPECT_EQ(be32(q), offsetof(hwinterp_board_t, link.seq));  // the guard's window
+  q += 4;
+  std::vector<uint32_t> stream;
+  for (uint32_t i = 0; i < nw; ++i, q += 4) stream.push_back(be32(q));
+  d.seq = stream.at(0);
+  for (size_t i = 1; i < stream.size();) {  // chunks: {count, word address}, data
+    const uint32_t count = stream[i] >> 24, word = stream[i] & 0xFFFFFF;
+    for (uint32_t k = 0; k < count; ++k) d.writes.push_back({4 * (word + k), stream.at(i + 1 + k)});
+    i += 1 + count;
+  }
+  d.tag = be32(q);
+  q += 4;
+  for (uint32_t i = 0; i < nr; ++i, q += 4) d.reads.push_back(be32(q));
+  return d;
+}
+
+// The board's answer to a packet: EXPECT after it, then every read's value.
+std::vector<uint8_t> reply(uint32_t tag, const std::vector<uint32_t>& words) {
+  std::vector<uint8_t> r = {
+      0x4E, 0x6F, 0x10, 0x44, 0, 0, 0, 0, 0, 0x0F, static_cast<uint8_t>(words.size()), 0};
+  auto put = [&](uint32_t v) {
+    for (int s = 24; s >= 0; s -= 8) r.push_back(static_cast<uint8_t>(v >> s));
+  };
+  put(tag);
+  for (uint32_t w : words) put(w);
+  return r;
+}
+
+hwi_board_id_t board_id() {
+  hwi_board_id_t id{};
+  id.magic = MOTION_SOC_REGS__ID_MAGIC__MAGIC_reset;
+  id.major = MOTION_SOC_REGS__ID_VERSION__MAJOR_reset;
+  id.axes = 4;
+  id.fifo_depth = 64;
+  id.feed_w = 24;
+  id.clock_hz = 1000000;
+  return id;
+}
+
+hwi_config_t config(uint32_t axes = 3) {
+  hwi_config_t c{};
+  c.axes = axes;
+  c.period_ns = 1000000;         // 1000 clocks
+  c.boundary_lead_ns = 5000000;  // 5 periods
+  c.step_len_ns = 2000;
+  c.step_space_ns = 2000;
+  c.dir_setup_ns = 3000;
+  c.dir_hold_ns = 3000;
+  c.watchdog_period_ns = 20000000;
+  c.retry_periods = 4;
+  c.dead_periods = 32;
+  return c;
+}
+
+struct Sent {
+  std::vector<std::vector<uint8_t>> packets;
+  static int send(void* ctx, const uint8_t* data, size_t len) {
+    static_cast<Sent*>(ctx)->packets.emplace_back(data, data + len);
+    return 0;
+  }
+};
+
+// A board for the servo's packets: runs their writes in SEQ order as the
+// guard does (a packet whose SEQ is not EXPECT is refused) and answers the
+// reads from its registers.
+struct GuardedBoard {
+  uint32_t expect = 0;
+  std::map<uint32_t, uint32_t> regs;
+  std::vector<Decoded> taken;
+  std::vector<uint8_t> answer(const std::vector<uint8_t>& pkt) {
+    Decoded d = decode(pkt.data(), pkt.size());
+    if (d.seq == expect) {
+      ++expect;
+      for (auto [a, v] : d.writes) regs[a] = v;
+      taken.push_back(d);
+    }
+    std::vector<uint32_t> words;
+    for (uint32_t a : d.reads)
+      words.push_back(a == offsetof(hwinterp_board_t, link.seq) ? expect : regs[a]);
+    return reply(d.tag, words);
+  }
+};
+
+TEST(HalServo, LatticeRoundsToTheNearestStepAndRefusesWhatIsNotANumber) {
+  EXPECT_EQ(hwi_lattice(1.0, 200.0), 200);
+  EXPECT_EQ(hwi_lattice(0.0024, 200.0), 0);  // 0.48 step
+  EXPECT_EQ(hwi_lattice(0.0026, 200.0), 1);  // 0.52 step
+  EXPECT_EQ(hwi_lattice(-0.0026, 200.0), -1);
+  EXPECT_EQ(hwi_lattice(std::nan(""), 200.0), 0);
+  EXPECT_EQ(hwi_lattice(std::numeric_limits<double>::infinity(), 1.0), 0);
+}
+
+TEST(HalServo, ALineRunsTwoToTheBitLengthOfItsLargestDelta) {
+  const int64_t zero[3] = {0, 0, 0}, one[3] = {0, -1, 0}, d[3] = {5, -31, 2}, e[3] = {32, 0, 0};
+  EXPECT_EQ(hwi_line_exponent(zero, 3), 0);
+  EXPECT_EQ(hwi_line_exponent(one, 3), 1);
+  EXPECT_EQ(hwi_line_exponent(d, 3), 5);
+  EXPECT_EQ(hwi_line_exponent(e, 3), 6);
+}
+
+// The feed word makes 2^n operations end within the budget, as fast as the
+// budget needs and no faster, and never beyond the step stage's rate.
+TEST(HalServo, FeedWordEndsTheLineWithinItsBudgetAtTheStepStagesRate) {
+  const uint32_t fw = 24;
+  const uint64_t one = uint64_t{1} << fw;
+  for (int n = 0; n <= 10; ++n)
+    for (int64_t budget : {50, 237, 937, 1000, 4000}) {
+      int too_fast = 0;
+      const uint32_t feed = hwi_line_feed(n, budget, fw, 4, &too_fast);
+      const uint64_t ops = uint64_t{1} << n;
+      const double clocks = static_cast<double>(ops) * static_cast<double>(one) / feed;
+      if (ops * 4 <= static_cast<uint64_t>(budget)) {
+        EXPECT_FALSE(too_fast) << n << " " << budget;
+        EXPECT_LE(clocks, static_cast<double>(budget)) << n << " " << budget;
+        // One less would not fit: the slowest word that fits.
+        EXPECT_GT(static_cast<double>(ops) * static_cast<double>(one) / (feed - 1), budget);
+      } else {
+        EXPECT_TRUE(too_fast) << n << " " << budget;
+        EXPECT_EQ(feed, one / 4);  // one operation every step_len + step_space clocks
+      }
+    }
+}
+
+TEST(HalServo, IdRefusesAProfileBuildAndTooManyJoints) {
+  hwi_config_t c = config();
+  hwi_board_id_t id = board_id();
+  EXPECT_EQ(hwi_id_problem(&id, &c), nullptr);
+  id.profile = 1;
+  EXPECT_NE(hwi_id_problem(&id, &c), nullptr);
+  id = board_id();
+  c.axes = 5;
+  EXPECT_NE(hwi_id_problem(&id, &c), nullptr);
+  id.magic = 0;
+  c.axes = 3;
+  EXPECT_NE(hwi_id_problem(&id, &c), nullptr);
+}
+
+TEST(HalServo, ReplyDecodingRefusesMalformedPackets) {
+  uint32_t tag = 0, w[4];
+  std::vector<uint8_t> r = reply(0x12345600, {7, 8});
+  EXPECT_EQ(hwi_eb_reply(r.data(), r.size(), &tag, w, 4), 2);
+  EXPECT_EQ(tag, 0x12345600u);
+  EXPECT_EQ(w[1], 8u);
+  EXPECT_EQ(hwi_eb_reply(r.data(), r.size() - 1, &tag, w, 4), -1);  // short
+  EXPECT_EQ(hwi_eb_reply(r.data(), r.size(), &tag, w, 1), -1);      // more words than asked
+  r[0] = 0;
+  EXPECT_EQ(hwi_eb_reply(r.data(), r.size(), &tag, w, 4), -1);  // magic
+}
+
+// The first packet carries the settings; each period with motion pushes one
+// timed line from the last point to this one, its boundary the period's
+// host time on the board plus the latency, one period after the last.
+TEST(HalServo, EachPeriodIsOneTimedLineAtItsBoundary) {
+  hwi_servo_t s;
+  const hwi_config_t c = config();
+  const hwi_board_id_t id = board_id();
+  const int64_t start[3] = {10, -5, 0};
+  hwi_servo_start(&s, &c, &id, 3, 100, start, /*board_time=*/50000, /*host_ns=*/0);
+  Sent out;
+  GuardedBoard board;
+  board.expect = 100;
+  const int64_t p1[3] = {14, -5, 1}, p2[3] = {14, -5, 1}, p3[3] = {20, -9, 1};
+  const int64_t* path[3] = {p1, p2, p3};
+  for (int k = 0; k < 3; ++k) {
+    ASSERT_EQ(hwi_servo_period(&s, (k + 1) * 1000000, path[k], Sent::send, &out), 1);
+    // The board keeps time: its TIME when it reads is the host's, 200 clocks on.
+    board.regs[motion(offsetof(motion_soc_regs_t, time_lo))] = 50000 + (k + 1) * 1000 + 200;
+    const std::vector<uint8_t> r = board.answer(out.packets.back());
+    ASSERT_EQ(hwi_servo_reply(&s, r.data(), r.size(), (k + 1) * 1000000 + 200000), 1);
+  }
+  ASSERT_EQ(board.taken.size(), 3u);
+  // Settings: FEED (a full word), the step timing in clocks, EVENTS cleared, the watchdog.
+  std::map<uint32_t, uint32_t> first(board.taken[0].writes.begin(), board.taken[0].writes.end());
+  EXPECT_EQ(first[motion(offsetof(motion_soc_regs_t, feed))], 1u << 24);
+  EXPECT_EQ(first[motion(offsetof(motion_soc_regs_t, step_len))], 2u);
+  EXPECT_EQ(first[motion(offsetof(motion_soc_regs_t, dir_setup))], 3u);
+  EXPECT_EQ(first[motion(offsetof(motion_soc_regs_t, events))], 0xFFFFFFFFu);
+  EXPECT_EQ(first[motion(offsetof(motion_soc_regs_t, wdog_period))], 20000u);
+  // The pushes: periods 1 and 3 (period 2 does not move).
+  std::vector<std::map<uint32_t, uint32_t>> pushes;
+  std::map<uint32_t, uint32_t> staged;
+  for (const Decoded& d : board.taken)
+    for (auto [a, v] : d.writes) {
+      staged[a] = v;
+      if (a == motion(offsetof(motion_soc_regs_t, cmd_push))) pushes.push_back(staged);
+    }
+  ASSERT_EQ(pushes.size(), 2u);
+  auto delta = [&](const std::map<uint32_t, uint32_t>& m, int a) {
+    return static_cast<int32_t>(m.at(motion(offsetof(motion_soc_regs_t, cmd_delta0) + 4 * a)));
+  };
+  auto at = [&](const std::map<uint32_t, uint32_t>& m) {
+    const uint32_t lo = motion(offsetof(motion_soc_regs_t, cmd_at));
+    return uint64_t{m.at(lo + 4)} << 32 | m.at(lo);
+  };
+  EXPECT_EQ(delta(pushes[0], 0), 4);
+  EXPECT_EQ(delta(pushes[0], 2), 1);
+  EXPECT_EQ(delta(pushes[1], 0), 6);
+  EXPECT_EQ(delta(pushes[1], 1), -4);
+  EXPECT_EQ(pushes[0].at(motion(offsetof(motion_soc_regs_t, cmd_flags))),
+            1u << MOTION_SOC_REGS__CMD_FLAGS__TIMED_bp);
+  // Period 1 at host 1 ms: board 50000 + 1000 clocks + 5000 of latency.
+  EXPECT_EQ(at(pushes[0]), 56000u);
+  // Two periods later, two periods on, within the slew of 15 clocks a period.
+  EXPECT_NEAR(static_cast<double>(at(pushes[1])), 58000.0, 2 * 15);
+  EXPECT_EQ(s.stats.commands, 2u);
+  EXPECT_EQ(s.stats.commands_taken, 2u);
+}
+
+// The window: a packet lost makes the guard refuse the next ones; the
+// servo sends them all again, in order, and every command is pushed once.
+TEST(HalServo, ALostPacketIsSentAgainWithTheOnesAfterIt) {
+  hwi_servo_t s;
+  const hwi_config_t c = config(1);
+  const hwi_board_id_t id = board_id();
+  const int64_t start[1] = {0};
+  hwi_servo_start(&s, &c, &id, 3, 0, start, 0, 0);
+  Sent out;
+  GuardedBoard board;
+  int64_t host = 0;
+  for (int k = 1; k <= 20; ++k) {
+    host += 1000000;
+    const int64_t p[1] = {k};
+    const size_t before = out.packets.size();
+    ASSERT_GE(hwi_servo_period(&s, host, p, Sent::send, &out), 1) << k;
+    for (size_t i = before; i < out.packets.size(); ++i) {
+      if (k == 3 && i == before) continue;  // the period-3 packet is lost
+      const std::vector<uint8_t> r = board.answer(out.packets[i]);
+      hwi_servo_reply(&s, r.data(), r.size(), host + 100000);
+    }
+  }
+  // The board pushed 20 lines of +1, each once, in order.
+  int pushes = 0;
+  for (const Decoded& d : board.taken)
+    for (auto [a, v] : d.writes)
+      if (a == motion(offsetof(motion_soc_regs_t, cmd_push))) ++pushes;
+  EXPECT_EQ(pushes, 20);
+  EXPECT_GT(s.stats.retransmits, 0u);
+  EXPECT_EQ(s.stats.commands_taken, 20u);
+  EXPECT_EQ(s.state, HWI_RUN);
+}
+
+// No reply at all: the link is down after dead_periods, and no more
+// commands are made.
+TEST(HalServo, TheLinkIsDownAfterDeadPeriodsWithoutAReply) {
+  hwi_servo_t s;
+  const hwi_config_t c = config(1);
+  const hwi_board_id_t id = board_id();
+  const int64_t start[1] = {0};
+  hwi_servo_start(&s, &c, &id, 3, 0, start, 0, 0);
+  Sent out;
+  int k = 1;
+  for (; k < 100 && s.state == HWI_RUN; ++k) {
+    const int64_t p[1] = {k};
+    hwi_servo_period(&s, k * 1000000, p, Sent::send, &out);
+  }
+  EXPECT_EQ(s.state, HWI_DOWN);
+  EXPECT_LE(k, static_cast<int>(c.dead_periods) + 2);
+  const int64_t p[1] = {1000};
+  EXPECT_EQ(hwi_servo_period(&s, k * 1000000, p, Sent::send, &out), -1);
+}
+
+// A snapshot armed at a boundary and read back equal to the point held
+// there is a check without error; one step off is an error of one step.
+TEST(HalServo, TheSnapshotChecksTheFollowingErrorAtItsBoundary) {
+  for (int64_t off : {0, 1}) {
+    hwi_servo_t s;
+    const hwi_config_t c = config(1);
+    const hwi_board_id_t id = board_id();
+    const int64_t start[1] = {0};
+    hwi_servo_start(&s, &c, &id, 3, 0, start, 0, 0);
+    Sent out;
+    GuardedBoard board;
+    const uint32_t snap_at = motion(offsetof(motion_soc_regs_t, snap_at));
+    int64_t host = 0;
+    for (int k = 1; k <= 12 && s.stats.boundary_checks == 0; ++k) {
+      host += 1000000;
+      const int64_t p[1] = {10 * k};
+      const size_t before = out.packets.size();
+      hwi_servo_period(&s, host, p, Sent::send, &out);
+      for (size_t i = before; i < out.packets.size(); ++i) {
+        // The board: TIME is the host's time; a snapshot armed fires at
+        // once with the position the servo expects there (plus `off`).
+        board.regs[motion(offsetof(motion_soc_regs_t, time_lo))] =
+            static_cast<uint32_t>(host / 1000);
+        const Decoded d = decode(out.packets[i].data(), out.packets[i].size());
+        for (auto [a, v] : d.writes)
+          if (a == snap_at) {
+            board.regs[motion(offsetof(motion_soc_regs_t, events))] =
+                1u << MOTION_SOC_REGS__EVENTS__SNAP_bp;
+            board.regs[motion(offsetof(motion_soc_regs_t, snap_time))] = v;
+            const int64_t held = s.snap_boundary.hold[0] + off;
+            board.regs[motion(offsetof(motion_soc_regs_t, snap_pos0))] =
+                static_cast<uint32_t>(held);
+            board.regs[motion(offsetof(motion_soc_regs_t, snap_pos0)) + 4] =
+                static_cast<uint32_t>(static_cast<uint64_t>(held) >> 32);
+          }
+        const std::vector<uint8_t> r = board.answer(out.packets[i]);
+        // The reads ran after the arm: the board of this test fires at once.
+        hwi_servo_reply(&s, r.data(), r.size(), host + 100000);
+      }
+    }
+    EXPECT_EQ(s.stats.boundary_checks, 1u) << off;
+    EXPECT_EQ(s.stats.boundary_errors, off ? 1u : 0u);
+    EXPECT_EQ(s.stats.max_ferror, off);
+  }
+}
+
+}  // namespace
