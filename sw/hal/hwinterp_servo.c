@@ -5,7 +5,7 @@
 #include <stddef.h>
 #include <string.h>
 
-#include "../board_regs.h"
+#include "board_regs.h"  // sw/board_regs.h
 
 #define REG(field) ((uint32_t)offsetof(hwinterp_board_t, field))
 #define MOTION(reg) REG(motion.reg)
@@ -413,9 +413,12 @@ int hwi_servo_period(hwi_servo_t* s, int64_t host_ns, const int64_t* lattice, hw
       return -1;
     }
     if (s->go_back || age % s->cfg.retry_periods == 0) {
-      // Every unanswered packet again, in order, each with its next attempt's tag.
+      // A refusal (an earlier packet was lost): every unanswered packet
+      // again, in order; a timeout: the oldest (the later ones may have
+      // been taken; their replies say), each with its next attempt's tag.
+      const uint32_t n = s->go_back ? s->in_flight : 1;
       s->go_back = 0;
-      for (uint32_t i = 0; i < s->in_flight; ++i) {
+      for (uint32_t i = 0; i < n; ++i) {
         hwi_packet_t* p = slot(s, i);
         ++p->attempt;
         put32(p->bytes + 12 + 4 + 4 * (size_t)p->bytes[10], tag_of(s, p->seq, p->attempt));

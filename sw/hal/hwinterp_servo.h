@@ -25,10 +25,11 @@
 // HWI_WINDOW of them unanswered (the board runs them in SEQ order; a reply
 // says whether its packet was taken): a period whose window is full keeps
 // its command for the next packet (a missed slot); when the oldest packet
-// has no reply for retry_periods, or a reply says its packet was refused
-// (an earlier one was lost), every unanswered packet is sent again from the
-// first the guard expects (go-back-N: the guard runs each once); none for
-// dead_periods: the link is down (no more commands). Every packet kicks
+// has no reply for retry_periods it is sent again, and when a reply says its
+// packet was refused (an earlier one was lost) every unanswered packet is
+// sent again from the first the guard expects (go-back-N: the guard runs
+// each once); no reply for dead_periods: the link is down (no more
+// commands). Every packet kicks
 // the watchdog and reads EXPECT, TIME, FIFO_LEVEL and EVENTS, and the
 // snapshot while one is armed.
 //

@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# Every LinuxCNC software-in-the-loop run the docs report (docs/linuxcnc.md):
+# the committed programs (tests/data/gcode/*.ngc, tests/data/linuxcnc/*.ngc)
+# to their end, and the three faults on corners.ngc (LinuxCNC killed, e-stop,
+# the link cut), each by scripts/linuxcnc/sil.sh; their reports gathered into
+# one JSON (default docs/data/linuxcnc_sil.json) that scripts/docs/render.py
+# renders. About 25 minutes (the programs run in real time). Never in CI.
+#
+# Usage: scripts/linuxcnc/sil_all.sh [--json FILE] [--out DIR] [PROG.ngc ...]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/../.." && pwd)
+json=$root/docs/data/linuxcnc_sil.json
+out=$root/out/linuxcnc
+programs=()
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --json) json=$2; shift 2 ;;
+    --out) out=$2; shift 2 ;;
+    -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2; exit 2 ;;
+    *) programs+=("$1"); shift ;;
+  esac
+done
+if [ ${#programs[@]} -eq 0 ]; then
+  programs=("$root"/tests/data/gcode/*.ngc "$root"/tests/data/linuxcnc/*.ngc)
+fi
+runs=()
+for p in "${programs[@]}"; do
+  d=$out/$(basename "$p" .ngc)
+  "$root/scripts/linuxcnc/sil.sh" "$p" --out "$d" || true
+  runs+=("$d/sil.json")
+done
+for f in "kill 3" "estop 3" "cut 3,0.5"; do
+  d=$out/corners-${f%% *}
+  "$root/scripts/linuxcnc/sil.sh" "$root/tests/data/gcode/corners.ngc" --out "$d" --fault $f || true
+  runs+=("$d/sil.json")
+done
+"$root/.venv/bin/python3" - "$json" "${runs[@]}" <<'PY'
+import json, os, subprocess, sys, datetime, platform
+out, runs = sys.argv[1], sys.argv[2:]
+root = os.path.dirname(os.path.dirname(os.path.abspath(out)))
+commit = subprocess.run(["git", "-C", root, "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
+data = {"command": "scripts/linuxcnc/sil_all.sh", "commit": commit,
+        "date": datetime.date.today().isoformat(),
+        "machine": "LinuxCNC 2.9.0~pre1 (Debian 12, POSIX non-realtime), 2 cores",
+        "runs": []}
+for r in runs:
+    if os.path.exists(r):
+        with open(r) as f:
+            data["runs"].append(json.load(f))
+    else:
+        data["runs"].append({"program": r, "passed": False, "missing": True})
+with open(out + ".tmp", "w") as f:
+    json.dump(data, f, indent=1)
+os.replace(out + ".tmp", out)
+print("wrote", out, sum(1 for r in data["runs"] if r.get("passed")), "of", len(data["runs"]), "passed")
+PY

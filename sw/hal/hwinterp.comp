@@ -1,0 +1,234 @@
+component hwinterp "LinuxCNC driver for a hwinterp motion_soc board: position-mode step generators whose every servo period is one timed line command, over Etherbone/UDP";
+
+description """
+Drives the step generators of a hwinterp board (docs/linuxcnc.md) built
+without the feed profile. Each servo period the joints' position-cmd,
+times position-scale and rounded, is a lattice point; the move from the
+last period's point is one line command that the board takes at the
+period's boundary (CMD_AT: the period's host time mapped to the board's
+TIME, plus latency) and ends before the next, so every joint is at its
+commanded lattice point at every boundary: no following error by
+construction. The board's snapshot, armed at a coming boundary, checks it.
+
+Load with the board's address and the joints:
+  loadrt hwinterp board_ip=127.0.0.1 board_port=1234 personality=3
+  addf hwinterp.0.update servo-thread
+
+While any driven stepgen's enable is false the board is stopped
+(CTRL.abort_motion) and position-fb is the board's position; on enable
+the driver reads the board's position and starts when position-cmd is
+within half a step of it (else it sets fault: turn the machine off and
+on again, LinuxCNC then commands from the board's position).
+""";
+
+license "GPL";
+author "hwinterp";
+
+pin in float stepgen.##.position_cmd[6 : personality] "commanded position (machine units)";
+pin out float stepgen.##.position_fb[6 : personality] "the commanded position plus the following error measured at the last checked boundary";
+pin out float stepgen.##.position_board[6 : personality] "the board's position at the last checked boundary (machine units)";
+pin out s32 stepgen.##.ferror_steps[6 : personality] "following error at the last checked boundary (steps)";
+pin out s32 stepgen.##.steps_cmd[6 : personality] "this period's lattice point: position-cmd x position-scale, rounded (steps)";
+pin in bit stepgen.##.enable[6 : personality] "run the stepgens while every one of them is enabled";
+param rw float stepgen.##.position_scale[6 : personality] = 1.0 "steps per machine unit";
+
+param rw u32 steplen = 5000 "step pulse length (ns, rounded up to board clocks)";
+param rw u32 stepspace = 5000 "least time between step pulses (ns)";
+param rw u32 dirsetup = 10000 "direction set-up before a step (ns)";
+param rw u32 dirhold = 10000 "direction hold after a step (ns)";
+param rw u32 step_type = 0 "0 step/dir, 1 up/down, 2 quadrature";
+param rw u32 latency_ns = 0 "host period to board boundary; 0: measured at load (three times the largest of 20 round trips plus two periods, at least five periods)";
+param rw u32 watchdog_ns = 20000000 "the board stops this long after the last packet (0: off)";
+
+pin out u32 fifo_level "commands in the board's FIFO";
+pin out u32 late_count "commands the board took after their boundary (EVENTS.late)";
+pin out bit watchdog_bit "the board's watchdog has bitten";
+pin out u32 link_errors "times the link went down";
+pin out bit fault "the link is down, the board refused, or position-cmd was not the board's position at enable";
+pin out u32 stats.periods "servo periods run";
+pin out u32 stats.commands "line commands sent";
+pin out u32 stats.missed_slots "periods whose command waited for a place in the window";
+pin out u32 stats.retransmits "packets sent again";
+pin out u32 stats.sends "packets sent, the ones sent again included";
+pin out u32 stats.packets "packets the board took";
+pin out u32 stats.boundary_checks "boundaries checked by a snapshot";
+pin out u32 stats.boundary_errors "checked boundaries with a following error";
+pin out s32 ferror_max "largest |following error| at a checked boundary (steps)";
+pin out float latency_us "the latency in use (us)";
+pin out bit running "the stepgens run (enabled, the board at position-cmd)";
+pin out float boundary_clock "this period's boundary: the board's TIME at which its command starts (the board holds the last period's point there)";
+pin out float rtt_us "the last round trip (us)";
+pin out u32 stats.bytes_sent_max "largest packet sent (bytes)";
+pin out u32 stats.bytes_received_max "largest reply (bytes)";
+pin out u32 stats.too_fast "periods beyond the board's step rate";
+
+function update fp "once per servo period, after motion";
+
+// The driver's code (no HAL in it), before the pins' names are defined.
+include "hwinterp_servo.c";
+include "hwinterp_link.c";
+
+option personality yes;
+option extra_setup yes;
+option extra_cleanup yes;
+option singleton yes;
+
+;;
+
+#include <stdio.h>
+
+static char* board_ip = "127.0.0.1";
+RTAPI_MP_STRING(board_ip, "the board's IPv4 address");
+static int board_port = 1234;
+RTAPI_MP_INT(board_port, "the board's Etherbone UDP port");
+
+static int fd = -1;
+static hwi_servo_t servo;
+static int active, refused;
+static uint64_t measured_latency_ns;
+static uint32_t session;
+
+EXTRA_SETUP() {
+  char err[256];
+  fd = hwi_udp_open(board_ip, board_port, err, sizeof err);
+  if (fd < 0) {
+    rtapi_print_msg(RTAPI_MSG_ERR, "hwinterp: %s\n", err);
+    return -EINVAL;
+  }
+  session = (uint32_t)hwi_now_ns() & 0xF;
+  // The round trip, from 20 reads of TIME: the latency's measure.
+  uint8_t pkt[64], buf[HWI_MAX_PACKET];
+  const uint32_t a[2] = {hwi_addr_time_lo(), hwi_addr_time_lo() + 4};
+  double worst = 0;
+  int answered = 0;
+  for (uint32_t i = 0; i < 20; ++i) {
+    const uint32_t tag = (session << 28) | (0x1000u + i) << 8;
+    const size_t n = hwi_eb_reads(pkt, sizeof pkt, tag, a, 2);
+    const int64_t t0 = hwi_now_ns();
+    hwi_udp_send(fd, pkt, n);
+    for (;;) {
+      const int r = hwi_udp_recv(fd, buf, sizeof buf, 200000);
+      uint32_t got, w[2];
+      if (r <= 0) break;
+      if (hwi_eb_reply(buf, (size_t)r, &got, w, 2) == 2 && got == tag) {
+        const double rtt = (double)(hwi_now_ns() - t0);
+        if (rtt > worst) worst = rtt;
+        ++answered;
+        break;
+      }
+    }
+  }
+  if (answered < 10) {
+    rtapi_print_msg(RTAPI_MSG_ERR, "hwinterp: udp %s:%d: %d of 20 reads of TIME answered\n",
+                    board_ip, board_port, answered);
+    return -EIO;
+  }
+  measured_latency_ns = (uint64_t)worst;
+  rtapi_print_msg(RTAPI_MSG_INFO, "hwinterp: udp %s:%d, largest round trip %.0f us\n", board_ip,
+                  board_port, worst / 1000);
+  return 0;
+}
+
+EXTRA_CLEANUP() { hwi_udp_close(fd); }
+
+FUNCTION(update) {
+  const int axes = personality < 1 ? 1 : personality > HWI_MAX_AXES ? HWI_MAX_AXES : personality;
+  int enabled = 1;
+  for (int i = 0; i < axes; ++i) enabled &= stepgen_enable(i);
+  running = 0;
+  if (!enabled) {
+    // Machine off, e-stop: the board stops at once.
+    if (active && hwi_link_abort(fd, &servo, 20000, 5) != 0) {
+      ++link_errors;
+      fault = 1;
+    }
+    active = 0;
+    refused = 0;
+    return;
+  }
+  if (refused) return;  // until the stepgens are disabled again
+  uint64_t latency = latency_ns;
+  if (!latency) {
+    latency = 3 * measured_latency_ns + 2 * (uint64_t)period;
+    if (latency < 5 * (uint64_t)period) latency = 5 * (uint64_t)period;
+  }
+  if (!active) {
+    char err[256];
+    hwi_config_t cfg;
+    memset(&cfg, 0, sizeof cfg);
+    cfg.axes = (uint32_t)axes;
+    cfg.period_ns = (uint64_t)period;
+    cfg.boundary_lead_ns = latency;
+    cfg.watchdog_period_ns = watchdog_ns;
+    cfg.output_type = step_type;
+    // Send again after two of the largest round trips measured at load (at
+    // least 4 periods); the link is down after 25 of those (at least 100).
+    cfg.retry_periods = (uint32_t)(2 * measured_latency_ns / (uint64_t)period) + 1;
+    if (cfg.retry_periods < 4) cfg.retry_periods = 4;
+    cfg.dead_periods = 25 * cfg.retry_periods < 100 ? 100 : 25 * cfg.retry_periods;
+    cfg.step_len_ns = steplen;
+    cfg.step_space_ns = stepspace;
+    cfg.dir_setup_ns = dirsetup;
+    cfg.dir_hold_ns = dirhold;
+    if (hwi_open_run(fd, &servo, &cfg, session, 50000, 5, err, sizeof err) != 0) {
+      rtapi_print_msg(RTAPI_MSG_ERR, "hwinterp: %s\n", err);
+      ++link_errors;
+      fault = 1;
+      refused = 1;
+      return;
+    }
+    for (int i = 0; i < axes; ++i) {
+      const int64_t at = servo.lattice[i];
+      stepgen_position_board(i) = (double)at / stepgen_position_scale(i);
+      stepgen_position_fb(i) = stepgen_position_board(i);
+      const int64_t want = hwi_lattice(stepgen_position_cmd(i), stepgen_position_scale(i));
+      if (want != at) {
+        rtapi_print_msg(RTAPI_MSG_ERR,
+                        "hwinterp: stepgen %d: position-cmd is %lld steps, the board is at %lld: "
+                        "turn the machine off and on again\n",
+                        i, (long long)want, (long long)at);
+        refused = 1;
+      }
+    }
+    fault = refused;
+    if (refused) return;
+    active = 1;
+    latency_us = (double)latency / 1000;
+  }
+  int64_t lattice[HWI_MAX_AXES];
+  for (int i = 0; i < axes; ++i) {
+    lattice[i] = hwi_lattice(stepgen_position_cmd(i), stepgen_position_scale(i));
+    stepgen_steps_cmd(i) = (int32_t)lattice[i];
+  }
+  if (hwi_link_period(fd, &servo, lattice, 0) != 0) {
+    rtapi_print_msg(RTAPI_MSG_ERR, "hwinterp: the link to %s:%d is down\n", board_ip, board_port);
+    ++link_errors;
+    fault = 1;
+    refused = 1;
+    active = 0;
+  }
+  running = active;
+  const hwi_stats_t* st = &servo.stats;
+  boundary_clock = (double)servo.last_at;
+  for (int i = 0; i < axes; ++i) {
+    const double scale = stepgen_position_scale(i);
+    stepgen_ferror_steps(i) = (int32_t)st->last_ferror[i];
+    stepgen_position_fb(i) = (double)(lattice[i] + st->last_ferror[i]) / scale;
+  }
+  fifo_level = st->fifo_fill;
+  late_count = (uint32_t)st->late_events;
+  watchdog_bit = st->watchdog_bitten;
+  stats_periods = (uint32_t)st->periods;
+  stats_commands = (uint32_t)st->commands;
+  stats_missed_slots = (uint32_t)st->missed_slots;
+  stats_retransmits = (uint32_t)st->retransmits;
+  stats_sends = (uint32_t)st->sends;
+  stats_packets = (uint32_t)st->packets;
+  stats_boundary_checks = (uint32_t)st->boundary_checks;
+  stats_boundary_errors = (uint32_t)st->boundary_errors;
+  ferror_max = (int32_t)st->max_ferror;
+  rtt_us = st->rtt_ns_last / 1000;
+  stats_bytes_sent_max = (uint32_t)st->bytes_sent_max;
+  stats_bytes_received_max = (uint32_t)st->bytes_received_max;
+  stats_too_fast = (uint32_t)st->too_fast;
+}
