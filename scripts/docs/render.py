@@ -688,6 +688,119 @@ def r_board_link(_):
                   "bytes to / from the board", "link", "passed"], rows) + ["", source(d)]
 
 
+def r_linuxcnc_pins(_):
+    """docs/linuxcnc.md: the HAL component's pins and parameters, as
+    sw/hal/hwinterp.comp declares them (halcompile's `pin`/`param` lines)."""
+    rows = []
+    decl = re.compile(r'^(pin|param)\s+(in|out|rw|r)\s+(\w+)\s+([\w.#]+)(\[[^\]]*\])?'
+                      r'(?:\s*=\s*([^"\s]+))?\s*"([^"]*)"\s*;')
+    with open(os.path.join(ROOT, "sw", "hal", "hwinterp.comp")) as f:
+        for line in f:
+            m = decl.match(line.strip())
+            if not m:
+                continue
+            kind, d, typ, name, arr, default, doc = m.groups()
+            name = "hwinterp." + name.replace("##", "NN").replace("_", "-")
+            rows.append(["`%s`" % name, kind, d, typ, default or "", doc])
+    if not rows:
+        fail("sw/hal/hwinterp.comp declares no pins")
+    return table(["name", "kind", "direction", "type", "default", "what"], rows) + [
+        "", "<sub>From `sw/hal/hwinterp.comp`; `NN` is the stepgen's number, 00 to "
+        "personality - 1.</sub>"]
+
+
+def r_linuxcnc_runs(_):
+    """docs/linuxcnc.md: LinuxCNC, the HAL component and the simulated board,
+    per program (scripts/linuxcnc/sil_all.sh)."""
+    d = load("linuxcnc_sil.json")
+    rows = []
+    for r in d["runs"]:
+        if r.get("fault"):
+            continue
+        if r.get("missing"):
+            rows.append(["`%s`" % os.path.basename(r["program"])] + ["(no report)"] * 9 + ["**no**"])
+            continue
+        drv = r.get("driver", {})
+        periods = max(r["periods_run"], 1)
+        rows.append([
+            "`%s`" % os.path.basename(r["program"]), grp(r["periods_run"]),
+            "%s / %s" % (grp(r["boundaries_checked"] - r["boundaries_with_error"]),
+                         grp(r["boundaries_checked"])),
+            "%d" % max(r["ferror_at_boundaries_max_steps"]), "%.2f" % r["ferror_inside_period_max_steps"],
+            str(r["late_commands"]),
+            "%.3f (%s missed)" % (drv.get("stats.sends", 0) / periods, r["missed_slots"]),
+            "%s / %s" % (drv.get("stats.bytes-sent-max", "-"), drv.get("stats.bytes-received-max", "-")),
+            "yes" if r["end_equal"] else "**no**",
+            "%.2f / %.2f / %.2f" % (r["machining_s_linuxcnc"] or 0, r["motion_s_commanded"],
+                                   r["motion_s_board"]),
+            "yes" if r["passed"] else "**no**"])
+    updates = ["<sub>Again: %s with `%s` on `%s`, %s.</sub>" % (
+        ", ".join("`%s`" % p for p in u["programs"]), u["command"], u["commit"], u["date"])
+        for u in d.get("updates", [])]
+    return table(["program", "periods", "boundaries at 0 error / checked",
+                  "max following error at a boundary (steps)", "max inside a period (steps)",
+                  "late commands", "packets sent a period", "bytes a packet, most (to / from)",
+                  "end positions equal", "machining s: LinuxCNC / commanded motion / board's steps",
+                  "passed"], rows) + ["", source(d)] + (["", *updates] if updates else [])
+
+
+def r_linuxcnc_planner(_):
+    """docs/linuxcnc.md: LinuxCNC's planner against ours on the same programs
+    and machine (scripts/linuxcnc/planner_compare.py)."""
+    d = load("linuxcnc_planner.json")
+    rows, notes = [], []
+    for p in d["programs"]:
+        cells = ["`%s`" % os.path.basename(p["program"]), "%.2f" % p["linuxcnc_s"]]
+        for prof in ("trapezoid", "scurve"):
+            r = p.get(prof, {})
+            if not r.get("passed"):
+                cells.append("refused" if r.get("error") else "**failed**")
+                msg = (r.get("error") or "").strip().splitlines()
+                if msg and prof == "trapezoid":
+                    notes.append("`%s`: %s" % (os.path.basename(p["program"]),
+                                               msg[-1].split("error: ", 1)[-1].replace(ROOT + "/", "")))
+            else:
+                cells.append("%.2f (%+.1f %%)" % (r["s"], 100.0 * (r["s"] / p["linuxcnc_s"] - 1)))
+        cells.append("%.2f" % p["trapezoid"]["programmed_s"] if p.get("trapezoid", {}).get("passed")
+                     else "")
+        rows.append(cells)
+    return (table(["program", "LinuxCNC (s, the board's steps)", "ours, trapezoid (s)",
+                   "ours, S-curve (s)", "at the programmed feed (s)"], rows) +
+            ["", "Refused by `hwinterp gcode`: " + "; ".join(notes)] * bool(notes) +
+            ["", source(d)])
+
+
+def r_linuxcnc_faults(_):
+    """docs/linuxcnc.md: the faults on corners.ngc (scripts/linuxcnc/sil_all.sh)."""
+    d = load("linuxcnc_sil.json")
+    rows = []
+    for r in d["runs"]:
+        f = r.get("fault", "")
+        if not f:
+            continue
+        kind = f.split()[0]
+        if kind == "kill":
+            what = ("watchdog bit %.1f ms after the last boundary sampled; %d steps after the bite" %
+                    ((r.get("bite_s", 0) - r.get("last_boundary_s", 0)) * 1e3,
+                     r.get("steps_after_bite", -1)))
+        elif kind == "estop":
+            what = ("the board stopped (CTRL.abort_motion); %d steps after the stop; %d queued "
+                    "boundaries dropped" % (r.get("steps_after_stop_boundary", -1),
+                                          r["boundaries_dropped_by_stop"]))
+        else:
+            what = ("the driver saw the link down after %.0f ms, the joints faulted; the watchdog "
+                    "bit; %d machine-on attempts (the first refused: LinuxCNC was not where the "
+                    "board stopped); the MDI move from the board's position; %d boundaries lost "
+                    "with the link" % ((r.get("fault_seen_s") or 0) * 1e3, r.get("on_attempts") or 0,
+                                      r["boundaries_dropped_by_stop"]))
+        rows.append(["`%s`" % f, grp(r["periods_run"]),
+                     "%s / %s" % (grp(r["boundaries_checked"] - r["boundaries_with_error"]),
+                                  grp(r["boundaries_checked"])),
+                     what, "yes" if r["passed"] else "**no**"])
+    return table(["fault (s into corners.ngc)", "periods", "boundaries at 0 error / checked",
+                  "what happened", "passed"], rows) + ["", source(d)]
+
+
 RENDERERS = {
     "folder-graph": ("tb", r_folder_graph),
     "synth-paths": ("docs/synth.json", r_synth_paths),
@@ -726,6 +839,10 @@ RENDERERS = {
     "soc-tests": ("docs/data/soc.json", r_soc_tests),
     "profile-ruckig": ("docs/data/profile_ruckig.json", r_profile_ruckig),
     "profile-programs": ("docs/data/profile_programs.json", r_profile_programs),
+    "linuxcnc-pins": ("sw/hal/hwinterp.comp", r_linuxcnc_pins),
+    "linuxcnc-runs": ("docs/data/linuxcnc_sil.json", r_linuxcnc_runs),
+    "linuxcnc-faults": ("docs/data/linuxcnc_sil.json", r_linuxcnc_faults),
+    "linuxcnc-planner": ("docs/data/linuxcnc_planner.json", r_linuxcnc_planner),
 }
 
 

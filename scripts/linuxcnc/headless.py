@@ -105,6 +105,7 @@ def main():
         cmd.wait_complete()
         cmd.program_open(program)
         cmd.wait_complete()
+        cmd.set_optional_stop(0)  # M1 does not stop; M0 (a program stop) is resumed below
         start = time.monotonic()
         cmd.auto(linuxcnc.AUTO_RUN, 0)
         result["started"] = True
@@ -171,9 +172,17 @@ def main():
             return
         wait("the program to run", lambda s: s.interp_state != linuxcnc.INTERP_IDLE or
              s.exec_state == linuxcnc.EXEC_DONE, 10, stat, errors, err)
-        wait("the program's end", lambda s: s.interp_state == linuxcnc.INTERP_IDLE and
-             s.exec_state == linuxcnc.EXEC_DONE and s.queue == 0 and not s.inpos is False,
-             timeout, stat, errors, err)
+        resumed = []
+
+        def ended(s):
+            if s.paused:  # M0: the operator's resume
+                resumed.append(time.monotonic())
+                cmd.auto(linuxcnc.AUTO_RESUME)
+                return False
+            return (s.interp_state == linuxcnc.INTERP_IDLE and s.exec_state == linuxcnc.EXEC_DONE
+                    and s.queue == 0)
+        wait("the program's end", ended, timeout, stat, errors, err)
+        result["resumed_after_m0"] = bool(resumed)
         result["machining_s"] = time.monotonic() - start
         result["ended"] = "program end"
         stat.poll()

@@ -6,16 +6,20 @@
 # one JSON (default docs/data/linuxcnc_sil.json) that scripts/docs/render.py
 # renders. About 25 minutes (the programs run in real time). Never in CI.
 #
-# Usage: scripts/linuxcnc/sil_all.sh [--json FILE] [--out DIR] [PROG.ngc ...]
+# Usage: scripts/linuxcnc/sil_all.sh [--json FILE] [--out DIR] [--update PROG.ngc ...]
+#   --update PROG...  run only these programs (no faults) and replace their
+#                     rows in the existing JSON (the update is recorded in it)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/../.." && pwd)
 json=$root/docs/data/linuxcnc_sil.json
 out=$root/out/linuxcnc
 programs=()
+update=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --json) json=$2; shift 2 ;;
     --out) out=$2; shift 2 ;;
+    --update) update=1; shift ;;
     -h|--help) sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//' >&2; exit 2 ;;
     *) programs+=("$1"); shift ;;
   esac
@@ -29,26 +33,42 @@ for p in "${programs[@]}"; do
   "$root/scripts/linuxcnc/sil.sh" "$p" --out "$d" || true
   runs+=("$d/sil.json")
 done
-for f in "kill 3" "estop 3" "cut 3,0.5"; do
+faults=("kill 3" "estop 3" "cut 3,0.5")
+[ -z "$update" ] || faults=()
+for f in "${faults[@]}"; do
   d=$out/corners-${f%% *}
   "$root/scripts/linuxcnc/sil.sh" "$root/tests/data/gcode/corners.ngc" --out "$d" --fault $f || true
   runs+=("$d/sil.json")
 done
-"$root/.venv/bin/python3" - "$json" "${runs[@]}" <<'PY'
+"$root/.venv/bin/python3" - "$json" "$update" "${runs[@]}" <<'PY'
 import json, os, subprocess, sys, datetime, platform
-out, runs = sys.argv[1], sys.argv[2:]
+out, update, runs = sys.argv[1], sys.argv[2], sys.argv[3:]
 root = os.path.dirname(os.path.dirname(os.path.abspath(out)))
 commit = subprocess.run(["git", "-C", root, "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
-data = {"command": "scripts/linuxcnc/sil_all.sh", "commit": commit,
-        "date": datetime.date.today().isoformat(),
-        "machine": "LinuxCNC 2.9.0~pre1 (Debian 12, POSIX non-realtime), 2 cores",
-        "runs": []}
+new = []
 for r in runs:
     if os.path.exists(r):
         with open(r) as f:
-            data["runs"].append(json.load(f))
+            new.append(json.load(f))
     else:
-        data["runs"].append({"program": r, "passed": False, "missing": True})
+        new.append({"program": r, "passed": False, "missing": True})
+if update:
+    with open(out) as f:
+        data = json.load(f)
+    names = {os.path.basename(r["program"]) for r in new}
+    paths = sorted(os.path.relpath(r["program"], root) for r in new)
+    data["runs"] = [r if r.get("fault") or os.path.basename(r["program"]) not in names else
+                    next(n for n in new if os.path.basename(n["program"]) == os.path.basename(r["program"]))
+                    for r in data["runs"]]
+    data.setdefault("updates", []).append({"programs": sorted(names), "commit": commit,
+                                           "date": datetime.date.today().isoformat(),
+                                           "command": "scripts/linuxcnc/sil_all.sh --update " +
+                                           " ".join(paths)})
+else:
+    data = {"command": "scripts/linuxcnc/sil_all.sh", "commit": commit,
+            "date": datetime.date.today().isoformat(),
+            "machine": "LinuxCNC 2.9.0~pre1 (Debian 12, POSIX non-realtime), 2 cores",
+            "runs": new}
 with open(out + ".tmp", "w") as f:
     json.dump(data, f, indent=1)
 os.replace(out + ".tmp", out)

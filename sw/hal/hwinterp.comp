@@ -147,11 +147,9 @@ FUNCTION(update) {
     return;
   }
   if (refused) return;  // until the stepgens are disabled again
-  uint64_t latency = latency_ns;
-  if (!latency) {
-    latency = 3 * measured_latency_ns + 2 * (uint64_t)period;
-    if (latency < 5 * (uint64_t)period) latency = 5 * (uint64_t)period;
-  }
+  const hwi_link_timing_t timing =
+      hwi_link_timing(measured_latency_ns, (uint64_t)period, latency_ns);
+  const uint64_t latency = timing.lead_ns;
   if (!active) {
     char err[256];
     hwi_config_t cfg;
@@ -161,11 +159,8 @@ FUNCTION(update) {
     cfg.boundary_lead_ns = latency;
     cfg.watchdog_period_ns = watchdog_ns;
     cfg.output_type = step_type;
-    // Send again after two of the largest round trips measured at load (at
-    // least 4 periods); the link is down after 25 of those (at least 100).
-    cfg.retry_periods = (uint32_t)(2 * measured_latency_ns / (uint64_t)period) + 1;
-    if (cfg.retry_periods < 4) cfg.retry_periods = 4;
-    cfg.dead_periods = 25 * cfg.retry_periods < 100 ? 100 : 25 * cfg.retry_periods;
+    cfg.retry_periods = timing.retry_periods;
+    cfg.dead_periods = timing.dead_periods;
     cfg.step_len_ns = steplen;
     cfg.step_space_ns = stepspace;
     cfg.dir_setup_ns = dirsetup;

@@ -142,6 +142,20 @@ const char* hwi_id_problem(const hwi_board_id_t* id, const hwi_config_t* cfg) {
   return NULL;
 }
 
+hwi_link_timing_t hwi_link_timing(uint64_t rtt_ns, uint64_t period_ns, uint64_t latency_ns) {
+  hwi_link_timing_t t;
+  if (period_ns < 1) period_ns = 1;
+  t.lead_ns = latency_ns;
+  if (!t.lead_ns) {
+    t.lead_ns = 3 * rtt_ns + 2 * period_ns;
+    if (t.lead_ns < 5 * period_ns) t.lead_ns = 5 * period_ns;
+  }
+  const uint64_t retry = 2 * rtt_ns / period_ns + 1;
+  t.retry_periods = retry < 4 ? 4 : retry > 1000 ? 1000 : (uint32_t)retry;
+  t.dead_periods = 25 * t.retry_periods < 100 ? 100 : 25 * t.retry_periods;
+  return t;
+}
+
 // --- the period's line ---------------------------------------------------------
 
 int64_t hwi_lattice(double position, double scale) {

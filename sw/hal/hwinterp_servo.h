@@ -174,6 +174,17 @@ int hwi_line_exponent(const int64_t* delta, uint32_t axes);
 // step_clocks) does not allow it (the word is then the fastest allowed).
 uint32_t hwi_line_feed(int n, int64_t budget, uint32_t feed_w, uint32_t step_clocks, int* too_fast);
 
+// The link's timing from the largest round trip measured (rtt_ns, e.g. of 20
+// reads of TIME) and the servo period: the latency (three round trips plus
+// two periods, at least five periods), the periods before a packet is sent
+// again (two round trips, at least 4) and before the link is down (25 of
+// those, at least 100). A latency given (latency_ns > 0) is kept.
+typedef struct {
+  uint64_t lead_ns;  // the latency (hwi_config_t's boundary_lead_ns)
+  uint32_t retry_periods, dead_periods;
+} hwi_link_timing_t;
+hwi_link_timing_t hwi_link_timing(uint64_t rtt_ns, uint64_t period_ns, uint64_t latency_ns);
+
 // Reads a board's ID registers (the words of hwi_id_reads, in order).
 size_t hwi_id_reads(uint32_t* addrs);
 void hwi_id_decode(const uint32_t* words, hwi_board_id_t* id);

@@ -165,6 +165,22 @@ TEST(HalServo, FeedWordEndsTheLineWithinItsBudgetAtTheStepStagesRate) {
     }
 }
 
+// The latency and the retries from the round trip measured at load.
+TEST(HalServo, LinkTimingFollowsTheRoundTripMeasured) {
+  const uint64_t ms = 1000000;
+  hwi_link_timing_t t = hwi_link_timing(ms / 4, ms, 0);  // a LAN: 0.25 ms
+  EXPECT_EQ(t.lead_ns, 5 * ms);                       // at least five periods
+  EXPECT_EQ(t.retry_periods, 4u);
+  EXPECT_EQ(t.dead_periods, 100u);
+  t = hwi_link_timing(8 * ms, ms, 0);  // a slow link: 8 ms
+  EXPECT_EQ(t.lead_ns, 26 * ms);    // three round trips and two periods
+  EXPECT_EQ(t.retry_periods, 17u);     // two round trips, and one
+  EXPECT_EQ(t.dead_periods, 425u);
+  t = hwi_link_timing(8 * ms, ms, 20 * ms);  // given: kept
+  EXPECT_EQ(t.lead_ns, 20 * ms);
+  EXPECT_EQ(t.retry_periods, 17u);
+}
+
 TEST(HalServo, IdRefusesAProfileBuildAndTooManyJoints) {
   hwi_config_t c = config();
   hwi_board_id_t id = board_id();
