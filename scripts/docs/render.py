@@ -758,7 +758,7 @@ def r_linuxcnc_planner(_):
                 msg = (r.get("error") or "").strip().splitlines()
                 if msg and prof == "trapezoid":
                     notes.append("`%s`: %s" % (os.path.basename(p["program"]),
-                                               msg[-1].split("error: ", 1)[-1].replace(ROOT + "/", "")))
+                                               msg[-1].split("error: ", 1)[-1]))
             else:
                 cells.append("%.2f (%+.1f %%)" % (r["s"], 100.0 * (r["s"] / p["linuxcnc_s"] - 1)))
         cells.append("%.2f" % p["trapezoid"]["programmed_s"] if p.get("trapezoid", {}).get("passed")
