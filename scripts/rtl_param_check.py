@@ -29,6 +29,7 @@ import os
 import re
 import subprocess
 import sys
+import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -178,7 +179,11 @@ def case(kind, top, files, params, name):
 def icarus():
     with open(os.path.join(ROOT, "rtl", "dda_line.f")) as f:
         files = [os.path.join(ROOT, "rtl", l.strip()) for l in f if l.strip() and not l.startswith("#")]
-    rc, out = run(["iverilog", "-g2012", "-o", os.devnull, "-s", "dda_line"] + files)
+    # Into a file of its own, never os.devnull: iverilog makes its output
+    # executable, and as root it turned /dev/null into mode 0755.
+    with tempfile.TemporaryDirectory() as tmp:
+        rc, out = run(["iverilog", "-g2012", "-o", os.path.join(tmp, "dda_line.vvp"), "-s",
+                       "dda_line"] + files)
     return None if rc == 0 else f"icarus rtl/dda_line.f: failed: {out.strip().splitlines()[0]}"
 
 
