@@ -8,20 +8,8 @@
 set -euo pipefail
 
 packages=(linuxcnc-uspace linuxcnc-uspace-dev)
-missing=()
-for p in "${packages[@]}"; do
-  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
-    missing+=("$p")
-  fi
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  echo "linuxcnc setup: installing ${missing[*]} from Debian (about 380 packages, a few minutes)" >&2
-  sudo_cmd=()
-  if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
-  export DEBIAN_FRONTEND=noninteractive
-  "${sudo_cmd[@]}" apt-get update -qq
-  "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
+root=$(cd "$(dirname "$0")/../.." && pwd)
+"$root/scripts/apt_install.sh" "linuxcnc setup (about 380 packages, a few minutes)" "${packages[@]}"
 for tool in halcompile halcmd linuxcnc; do
   command -v "$tool" >/dev/null || { echo "linuxcnc setup: $tool is not on PATH after the install" >&2; exit 1; }
 done
