@@ -96,6 +96,14 @@ hwi_config_t config(uint32_t axes = 3) {
   return c;
 }
 
+// One axis at 0, SEQ 0, board time 0 at host time 0.
+void start_one_axis(hwi_servo_t* s) {
+  const hwi_config_t c = config(1);
+  const hwi_board_id_t id = board_id();
+  const int64_t start[1] = {0};
+  hwi_servo_start(s, &c, &id, 3, 0, start, 0, 0);
+}
+
 struct Sent {
   std::vector<std::vector<uint8_t>> packets;
   static int send(void* ctx, const uint8_t* data, size_t len) {
@@ -169,11 +177,11 @@ TEST(HalServo, FeedWordEndsTheLineWithinItsBudgetAtTheStepStagesRate) {
 TEST(HalServo, LinkTimingFollowsTheRoundTripMeasured) {
   const uint64_t ms = 1000000;
   hwi_link_timing_t t = hwi_link_timing(ms / 4, ms, 0);  // a LAN: 0.25 ms
-  EXPECT_EQ(t.lead_ns, 5 * ms);                       // at least five periods
+  EXPECT_EQ(t.lead_ns, 5 * ms);                          // at least five periods
   EXPECT_EQ(t.retry_periods, 4u);
   EXPECT_EQ(t.dead_periods, 100u);
   t = hwi_link_timing(8 * ms, ms, 0);  // a slow link: 8 ms
-  EXPECT_EQ(t.lead_ns, 26 * ms);    // three round trips and two periods
+  EXPECT_EQ(t.lead_ns, 26 * ms);       // three round trips and two periods
   EXPECT_EQ(t.retry_periods, 17u);     // two round trips, and one
   EXPECT_EQ(t.dead_periods, 425u);
   t = hwi_link_timing(8 * ms, ms, 20 * ms);  // given: kept
@@ -270,10 +278,7 @@ TEST(HalServo, EachPeriodIsOneTimedLineAtItsBoundary) {
 // servo sends them all again, in order, and every command is pushed once.
 TEST(HalServo, ALostPacketIsSentAgainWithTheOnesAfterIt) {
   hwi_servo_t s;
-  const hwi_config_t c = config(1);
-  const hwi_board_id_t id = board_id();
-  const int64_t start[1] = {0};
-  hwi_servo_start(&s, &c, &id, 3, 0, start, 0, 0);
+  start_one_axis(&s);
   Sent out;
   GuardedBoard board;
   int64_t host = 0;
@@ -303,10 +308,7 @@ TEST(HalServo, ALostPacketIsSentAgainWithTheOnesAfterIt) {
 // commands are made.
 TEST(HalServo, TheLinkIsDownAfterDeadPeriodsWithoutAReply) {
   hwi_servo_t s;
-  const hwi_config_t c = config(1);
-  const hwi_board_id_t id = board_id();
-  const int64_t start[1] = {0};
-  hwi_servo_start(&s, &c, &id, 3, 0, start, 0, 0);
+  start_one_axis(&s);
   Sent out;
   int k = 1;
   for (; k < 100 && s.state == HWI_RUN; ++k) {
@@ -314,7 +316,7 @@ TEST(HalServo, TheLinkIsDownAfterDeadPeriodsWithoutAReply) {
     hwi_servo_period(&s, k * 1000000, p, Sent::send, &out);
   }
   EXPECT_EQ(s.state, HWI_DOWN);
-  EXPECT_LE(k, static_cast<int>(c.dead_periods) + 2);
+  EXPECT_LE(k, static_cast<int>(s.cfg.dead_periods) + 2);
   const int64_t p[1] = {1000};
   EXPECT_EQ(hwi_servo_period(&s, k * 1000000, p, Sent::send, &out), -1);
 }
@@ -324,10 +326,7 @@ TEST(HalServo, TheLinkIsDownAfterDeadPeriodsWithoutAReply) {
 TEST(HalServo, TheSnapshotChecksTheFollowingErrorAtItsBoundary) {
   for (int64_t off : {0, 1}) {
     hwi_servo_t s;
-    const hwi_config_t c = config(1);
-    const hwi_board_id_t id = board_id();
-    const int64_t start[1] = {0};
-    hwi_servo_start(&s, &c, &id, 3, 0, start, 0, 0);
+    start_one_axis(&s);
     Sent out;
     GuardedBoard board;
     const uint32_t snap_at = motion(offsetof(motion_soc_regs_t, snap_at));
