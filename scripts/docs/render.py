@@ -709,6 +709,15 @@ def r_linuxcnc_pins(_):
         "personality - 1.</sub>"]
 
 
+def linuxcnc_run_name(r, what):
+    """A SIL run's name in the tables: the program (or fault), and the link
+    when it is the UART (with its servo period)."""
+    if r.get("link", "").startswith("serial:"):
+        return "%s over the UART (%s baud, %g ms period)" % (
+            what, r["link"].rsplit("@", 1)[-1], r["servo_period_s"] * 1e3)
+    return what
+
+
 def r_linuxcnc_runs(_):
     """docs/linuxcnc.md: LinuxCNC, the HAL component and the simulated board,
     per program (scripts/linuxcnc/sil_all.sh)."""
@@ -723,7 +732,7 @@ def r_linuxcnc_runs(_):
         drv = r.get("driver", {})
         periods = max(r["periods_run"], 1)
         rows.append([
-            "`%s`" % os.path.basename(r["program"]), grp(r["periods_run"]),
+            linuxcnc_run_name(r, "`%s`" % os.path.basename(r["program"])), grp(r["periods_run"]),
             "%s / %s" % (grp(r["boundaries_checked"] - r["boundaries_with_error"]),
                          grp(r["boundaries_checked"])),
             "%d" % max(r["ferror_at_boundaries_max_steps"]), "%.2f" % r["ferror_inside_period_max_steps"],
@@ -793,7 +802,7 @@ def r_linuxcnc_faults(_):
                     "board stopped); the MDI move from the board's position; %d boundaries lost "
                     "with the link" % ((r.get("fault_seen_s") or 0) * 1e3, r.get("on_attempts") or 0,
                                       r["boundaries_dropped_by_stop"]))
-        rows.append(["`%s`" % f, grp(r["periods_run"]),
+        rows.append([linuxcnc_run_name(r, "`%s`" % f), grp(r["periods_run"]),
                      "%s / %s" % (grp(r["boundaries_checked"] - r["boundaries_with_error"]),
                                   grp(r["boundaries_checked"])),
                      what, "yes" if r["passed"] else "**no**"])

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """The LinuxCNC configuration of one software-in-the-loop run
-(scripts/linuxcnc/sil.sh): sw/hal/config/ copied, the board's port set, the
+(scripts/linuxcnc/sil.sh): sw/hal/config/ copied, the board's link (and,
+when given, the servo period, the latency and the watchdog) set, the
 headless display (scripts/linuxcnc/headless.py) and the run's [SIL] section
 added, and sil.hal, which samples each servo period: the joints' commanded
 positions, the driver's boundary clock, running, late count, FIFO level,
@@ -26,7 +27,10 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--config", required=True)
     ap.add_argument("--out", required=True)
-    ap.add_argument("--port", type=int, required=True)
+    ap.add_argument("--board", required=True, help="the board's link URI ([HWINTERP]BOARD)")
+    ap.add_argument("--servo-period-ns", type=int, default=0, help="[EMCMOT]SERVO_PERIOD (0: kept)")
+    ap.add_argument("--latency-ns", type=int, default=0, help="[HWINTERP]LATENCY_NS (0: kept)")
+    ap.add_argument("--watchdog-ns", type=int, default=0, help="[HWINTERP]WATCHDOG_NS (0: kept)")
     ap.add_argument("--program", required=True)
     ap.add_argument("--display", required=True)
     ap.add_argument("--fault", default="")
@@ -48,8 +52,14 @@ def main():
         key = s.split("=", 1)[0].strip() if "=" in s and not s.startswith("#") else None
         if section == "DISPLAY" and key == "DISPLAY":
             line = f"DISPLAY = {a.display}"
-        elif section == "HWINTERP" and key == "BOARD_PORT":
-            line = f"BOARD_PORT = {a.port}"
+        elif section == "HWINTERP" and key == "BOARD":
+            line = f"BOARD = {a.board}"
+        elif section == "HWINTERP" and key == "LATENCY_NS" and a.latency_ns:
+            line = f"LATENCY_NS = {a.latency_ns}"
+        elif section == "HWINTERP" and key == "WATCHDOG_NS" and a.watchdog_ns:
+            line = f"WATCHDOG_NS = {a.watchdog_ns}"
+        elif section == "EMCMOT" and key == "SERVO_PERIOD" and a.servo_period_ns:
+            line = f"SERVO_PERIOD = {a.servo_period_ns}"
         out.append(line)
         if section == "HAL" and key == "HALFILE":
             out.append("HALFILE = sil.hal")

@@ -161,6 +161,8 @@ def main():
         "ended": lc.get("ended"),
         "linuxcnc_errors": lc.get("errors", []),
         "linuxcnc_rc": a.linuxcnc_rc,
+        "board": board.get("board"),
+        "link": ini["HWINTERP"]["BOARD"],
         "board_clock_hz": hz,
         "servo_period_s": period_s,
         "periods_run": len(run),

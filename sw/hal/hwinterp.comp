@@ -1,4 +1,4 @@
-component hwinterp "LinuxCNC driver for a hwinterp motion_soc board: position-mode step generators whose every servo period is one timed line command, over Etherbone/UDP";
+component hwinterp "LinuxCNC driver for a hwinterp motion_soc board: position-mode step generators whose every servo period is one timed line command, over Etherbone on UDP or a UART";
 
 description """
 Drives the step generators of a hwinterp board (docs/linuxcnc.md) built
@@ -10,9 +10,14 @@ TIME, plus latency) and ends before the next, so every joint is at its
 commanded lattice point at every boundary: no following error by
 construction. The board's snapshot, armed at a coming boundary, checks it.
 
-Load with the board's address and the joints:
-  loadrt hwinterp board_ip=127.0.0.1 board_port=1234 personality=3
-  addf hwinterp.0.update servo-thread
+Load with the board's link and the joints:
+  loadrt hwinterp board=udp:192.168.1.50:1234 personality=3
+  loadrt hwinterp board=serial:/dev/ttyUSB1@1000000 personality=3
+  addf hwinterp.update servo-thread
+
+On a UART one packet is unanswered at a time (the board's bridge runs one
+frame at a time): the commands of the periods its exchange takes go
+together in the next packet.
 
 While any driven stepgen's enable is false the board is stopped
 (CTRL.abort_motion) and position-fb is the board's position; on enable
@@ -77,12 +82,10 @@ option singleton yes;
 
 #include <stdio.h>
 
-static char* board_ip = "127.0.0.1";
-RTAPI_MP_STRING(board_ip, "the board's IPv4 address");
-static int board_port = 1234;
-RTAPI_MP_INT(board_port, "the board's Etherbone UDP port");
+static char* board = "udp:127.0.0.1:1234";
+RTAPI_MP_STRING(board, "the board's link: udp:HOST[:PORT] (Etherbone) or serial:DEV[@BAUD] (a UART)");
 
-static int fd = -1;
+static hwi_link_t board_link;
 static hwi_servo_t servo;
 static int active, refused;
 static uint64_t measured_latency_ns;
@@ -90,46 +93,26 @@ static uint32_t session;
 
 EXTRA_SETUP() {
   char err[256];
-  fd = hwi_udp_open(board_ip, board_port, err, sizeof err);
-  if (fd < 0) {
+  if (hwi_link_open(&board_link, board, err, sizeof err) != 0) {
     rtapi_print_msg(RTAPI_MSG_ERR, "hwinterp: %s\n", err);
     return -EINVAL;
   }
   session = (uint32_t)hwi_now_ns() & 0xF;
   // The round trip, from 20 reads of TIME: the latency's measure.
-  uint8_t pkt[64], buf[HWI_MAX_PACKET];
-  const uint32_t a[2] = {hwi_addr_time_lo(), hwi_addr_time_lo() + 4};
-  double worst = 0;
-  int answered = 0;
-  for (uint32_t i = 0; i < 20; ++i) {
-    const uint32_t tag = (session << 28) | (0x1000u + i) << 8;
-    const size_t n = hwi_eb_reads(pkt, sizeof pkt, tag, a, 2);
-    const int64_t t0 = hwi_now_ns();
-    hwi_udp_send(fd, pkt, n);
-    for (;;) {
-      const int r = hwi_udp_recv(fd, buf, sizeof buf, 200000);
-      uint32_t got, w[2];
-      if (r <= 0) break;
-      if (hwi_eb_reply(buf, (size_t)r, &got, w, 2) == 2 && got == tag) {
-        const double rtt = (double)(hwi_now_ns() - t0);
-        if (rtt > worst) worst = rtt;
-        ++answered;
-        break;
-      }
-    }
-  }
-  if (answered < 10) {
-    rtapi_print_msg(RTAPI_MSG_ERR, "hwinterp: udp %s:%d: %d of 20 reads of TIME answered\n",
-                    board_ip, board_port, answered);
+  const int64_t worst = hwi_link_rtt(&board_link, session, 20, 200000);
+  if (worst < 0) {
+    rtapi_print_msg(RTAPI_MSG_ERR, "hwinterp: %s: fewer than 10 of 20 reads of TIME answered\n",
+                    board_link.name);
+    hwi_link_close(&board_link);
     return -EIO;
   }
   measured_latency_ns = (uint64_t)worst;
-  rtapi_print_msg(RTAPI_MSG_INFO, "hwinterp: udp %s:%d, largest round trip %.0f us\n", board_ip,
-                  board_port, worst / 1000);
+  rtapi_print_msg(RTAPI_MSG_INFO, "hwinterp: %s, largest round trip %.0f us\n", board_link.name,
+                  (double)worst / 1000);
   return 0;
 }
 
-EXTRA_CLEANUP() { hwi_udp_close(fd); }
+EXTRA_CLEANUP() { hwi_link_close(&board_link); }
 
 FUNCTION(update) {
   const int axes = personality < 1 ? 1 : personality > HWI_MAX_AXES ? HWI_MAX_AXES : personality;
@@ -138,7 +121,7 @@ FUNCTION(update) {
   running = 0;
   if (!enabled) {
     // Machine off, e-stop: the board stops at once.
-    if (active && hwi_link_abort(fd, &servo, 20000, 5) != 0) {
+    if (active && hwi_link_abort(&board_link, &servo, 20000, 5) != 0) {
       ++link_errors;
       fault = 1;
     }
@@ -148,7 +131,8 @@ FUNCTION(update) {
   }
   if (refused) return;  // until the stepgens are disabled again
   const hwi_link_timing_t timing =
-      hwi_link_timing(measured_latency_ns, (uint64_t)period, latency_ns);
+      hwi_link_timing(measured_latency_ns, (uint64_t)period, latency_ns,
+                      hwi_link_period_wire_ns(&board_link, (uint32_t)axes));
   const uint64_t latency = timing.lead_ns;
   if (!active) {
     char err[256];
@@ -165,7 +149,8 @@ FUNCTION(update) {
     cfg.step_space_ns = stepspace;
     cfg.dir_setup_ns = dirsetup;
     cfg.dir_hold_ns = dirhold;
-    if (hwi_open_run(fd, &servo, &cfg, session, 50000, 5, err, sizeof err) != 0) {
+    hwi_link_configure(&board_link, &cfg);
+    if (hwi_open_run(&board_link, &servo, &cfg, session, 50000, 5, err, sizeof err) != 0) {
       rtapi_print_msg(RTAPI_MSG_ERR, "hwinterp: %s\n", err);
       ++link_errors;
       fault = 1;
@@ -195,8 +180,8 @@ FUNCTION(update) {
     lattice[i] = hwi_lattice(stepgen_position_cmd(i), stepgen_position_scale(i));
     stepgen_steps_cmd(i) = (int32_t)lattice[i];
   }
-  if (hwi_link_period(fd, &servo, lattice, 0) != 0) {
-    rtapi_print_msg(RTAPI_MSG_ERR, "hwinterp: the link to %s:%d is down\n", board_ip, board_port);
+  if (hwi_link_period(&board_link, &servo, lattice, 0) != 0) {
+    rtapi_print_msg(RTAPI_MSG_ERR, "hwinterp: the link %s is down\n", board_link.name);
     ++link_errors;
     fault = 1;
     refused = 1;

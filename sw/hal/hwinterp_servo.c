@@ -142,15 +142,16 @@ const char* hwi_id_problem(const hwi_board_id_t* id, const hwi_config_t* cfg) {
   return NULL;
 }
 
-hwi_link_timing_t hwi_link_timing(uint64_t rtt_ns, uint64_t period_ns, uint64_t latency_ns) {
+hwi_link_timing_t hwi_link_timing(uint64_t rtt_ns, uint64_t period_ns, uint64_t latency_ns,
+                                  uint64_t wire_ns) {
   hwi_link_timing_t t;
   if (period_ns < 1) period_ns = 1;
   t.lead_ns = latency_ns;
   if (!t.lead_ns) {
-    t.lead_ns = 3 * rtt_ns + 2 * period_ns;
+    t.lead_ns = 3 * rtt_ns + 2 * period_ns + 4 * wire_ns;
     if (t.lead_ns < 5 * period_ns) t.lead_ns = 5 * period_ns;
   }
-  const uint64_t retry = 2 * rtt_ns / period_ns + 1;
+  const uint64_t retry = (2 * rtt_ns + 2 * wire_ns) / period_ns + 1;
   t.retry_periods = retry < 4 ? 4 : retry > 1000 ? 1000 : (uint32_t)retry;
   t.dead_periods = 25 * t.retry_periods < 100 ? 100 : 25 * t.retry_periods;
   return t;
@@ -231,6 +232,8 @@ void hwi_servo_start(hwi_servo_t* s, const hwi_config_t* cfg, const hwi_board_id
   s->cfg = *cfg;
   if (s->cfg.retry_periods < 1) s->cfg.retry_periods = 1;
   if (s->cfg.dead_periods <= s->cfg.retry_periods) s->cfg.dead_periods = s->cfg.retry_periods + 1;
+  if (s->cfg.window < 1 || s->cfg.window > HWI_WINDOW) s->cfg.window = HWI_WINDOW;
+  s->stats.retry_periods = s->cfg.retry_periods;
   s->id = *id;
   s->state = HWI_RUN;
   s->session = session;
@@ -268,7 +271,21 @@ static void chunk1(stream_t* st, uint32_t addr, uint32_t word) { chunk(st, addr,
 
 // Stream words of a line command: the deltas' chunk, then CMD_FEED, CMD_AT
 // (two words), CMD_FLAGS (a timed line) and CMD_PUSH, consecutive.
-static uint32_t line_words(const hwi_servo_t* s) { return 1 + s->cfg.axes + 1 + 5; }
+static uint32_t line_words_of(uint32_t axes) { return 1 + axes + 1 + 5; }
+static uint32_t line_words(const hwi_servo_t* s) { return line_words_of(s->cfg.axes); }
+
+// The words of a period's packet before its commands: SEQ, the kick's chunk.
+enum { PERIOD_HEAD_WORDS = 1 + 2, PERIOD_READS = 5 };
+
+size_t hwi_period_packet_bytes(uint32_t axes, uint32_t commands) {
+  const size_t nw = PERIOD_HEAD_WORDS + (size_t)commands * line_words_of(axes);
+  return 12 + 4 + 4 * nw + 4 + 4 * PERIOD_READS;
+}
+
+size_t hwi_period_reply_bytes(uint32_t snap_axes) {
+  const size_t nr = snap_axes ? PERIOD_READS - 1 + 3 + 2 * (size_t)snap_axes : PERIOD_READS;
+  return 16 + 4 * nr;
+}
 
 static void put_line(const hwi_servo_t* s, stream_t* st, const hwi_line_t* l) {
   uint32_t d[HWI_MAX_AXES];
@@ -325,14 +342,15 @@ static hwi_packet_t* build_packet(hwi_servo_t* s, int64_t host_ns) {
       }
     }
   }
-  // The reads: EXPECT, TIME, FIFO_LEVEL, EVENTS; the snapshot's while one is armed.
+  // The reads: EXPECT, TIME, FIFO_LEVEL, EVENTS; the snapshot's once a
+  // reply has shown it taken.
   uint32_t reads[MAX_READS];
   uint32_t nr = 0;
   reads[nr++] = REG(link.seq);
   reads[nr++] = MOTION(time_lo);
   reads[nr++] = MOTION(time_hi);
   reads[nr++] = MOTION(fifo_level);
-  if (s->snap_armed)
+  if (s->snap_armed && s->snap_fired)
     nr += hwi_snap_reads(s->cfg.axes, reads + nr);  // EVENTS, SNAP_TIME, SNAP_POS
   else
     reads[nr++] = MOTION(events);
@@ -426,7 +444,12 @@ int hwi_servo_period(hwi_servo_t* s, int64_t host_ns, const int64_t* lattice, hw
       s->state = HWI_DOWN;
       return -1;
     }
-    if (s->go_back || age % s->cfg.retry_periods == 0) {
+    // The first retry waits for the packet's and its reply's bytes on the
+    // wire too (a UART's), then one every retry_periods.
+    const double wire = (double)(oldest->len + 16 + 4 * oldest->reads + 12) * s->cfg.byte_ns;
+    const uint32_t retry = s->stats.retry_periods;
+    const uint64_t wait = retry + (uint64_t)ceil(wire / (double)s->cfg.period_ns);
+    if (s->go_back || (age >= wait && (age - wait) % retry == 0)) {
       // A refusal (an earlier packet was lost): every unanswered packet
       // again, in order; a timeout: the oldest (the later ones may have
       // been taken; their replies say), each with its next attempt's tag.
@@ -442,7 +465,7 @@ int hwi_servo_period(hwi_servo_t* s, int64_t host_ns, const int64_t* lattice, hw
       }
     }
   }
-  if (s->in_flight == HWI_WINDOW) {
+  if (s->in_flight >= s->cfg.window) {
     if (moves) ++s->stats.missed_slots;
     return sent;
   }
@@ -471,6 +494,19 @@ static void take_reads(hwi_servo_t* s, const hwi_packet_t* p, const uint32_t* wo
     const double rtt = (double)(host_ns - p->sent_ns);
     s->stats.rtt_ns_last = rtt;
     if (rtt > s->stats.rtt_ns_max) s->stats.rtt_ns_max = rtt;
+    if (s->stats.rtt_ns_smooth == 0) {
+      s->stats.rtt_ns_smooth = rtt;
+      s->stats.rtt_ns_var = rtt / 2;
+    } else {
+      s->stats.rtt_ns_var += (fabs(s->stats.rtt_ns_smooth - rtt) - s->stats.rtt_ns_var) / 4;
+      s->stats.rtt_ns_smooth += (rtt - s->stats.rtt_ns_smooth) / 8;
+    }
+    const double want =
+        ceil((s->stats.rtt_ns_smooth + 4 * s->stats.rtt_ns_var) / (double)s->cfg.period_ns) + 1;
+    const double most = (double)(s->cfg.dead_periods / 2);
+    s->stats.retry_periods = want < (double)s->cfg.retry_periods ? s->cfg.retry_periods
+                             : want > most                       ? (uint32_t)most
+                                                                 : (uint32_t)want;
     const double mid = (double)(p->sent_ns - s->host0_ns) + rtt / 2;
     const double sample = (double)t - mid * s->clocks_per_ns;
     s->stats.offset_clocks += (sample - s->stats.offset_clocks) / 16;
@@ -493,10 +529,15 @@ static void take_reads(hwi_servo_t* s, const hwi_packet_t* p, const uint32_t* wo
     s->events_seen |= fresh;
     s->events_to_clear |= fresh;
   }
-  // The snapshot: read by a packet at or after the one that armed it.
-  if (s->snap_armed && p->reads > 5 && (int32_t)(p->seq - s->snap_seq) >= 0 &&
-      (ev & BIT(EVENTS, SNAP))) {
+  // The snapshot: seen taken by a packet at or after the one that armed
+  // it, then read by the next.
+  if (s->snap_armed && (int32_t)(p->seq - s->snap_seq) >= 0 && (ev & BIT(EVENTS, SNAP))) {
+    if (p->reads <= PERIOD_READS) {
+      s->snap_fired = 1;
+      return;
+    }
     s->snap_armed = 0;
+    s->snap_fired = 0;
     const int64_t when = s64(words[5], words[6]);
     if (when != s->snap_boundary.at) {
       ++s->stats.boundary_misses;

@@ -30,8 +30,8 @@
 // sent again from the first the guard expects (go-back-N: the guard runs
 // each once); no reply for dead_periods: the link is down (no more
 // commands). Every packet kicks
-// the watchdog and reads EXPECT, TIME, FIFO_LEVEL and EVENTS, and the
-// snapshot while one is armed.
+// the watchdog and reads EXPECT, TIME, FIFO_LEVEL and EVENTS; the packet
+// after a reply that showed the snapshot taken reads it too.
 //
 // Following error. The snapshot is armed at a future boundary; when it
 // fires, its position is compared with the lattice point the board must
@@ -68,6 +68,9 @@ typedef struct {
   uint64_t watchdog_period_ns;  // WDOG_PERIOD (0: off)
   uint32_t retry_periods;       // send again after this many periods without a reply
   uint32_t dead_periods;        // the link is down after this many
+  uint32_t window;              // packets unanswered at most: 1..HWI_WINDOW (0: HWI_WINDOW)
+  double byte_ns;               // a byte's time on the wire (a UART's; 0: none): a packet's
+                                // retry waits for its and its reply's bytes too
 } hwi_config_t;
 
 // Figures the driver reports (HAL pins, the closing JSON).
@@ -94,8 +97,11 @@ typedef struct {
   uint32_t events;      // EVENTS as last read
   uint64_t board_time;  // TIME as last read
   double rtt_ns_max, rtt_ns_last;
-  double offset_clocks;        // board time - host time, filtered (clocks)
-  int watchdog_bitten, estop;  // EVENTS.wdog / EVENTS.estop seen
+  double rtt_ns_smooth, rtt_ns_var;  // the round trips, filtered as TCP does (RFC 6298)
+  uint32_t retry_periods;            // the retry now: the smoothed round trip and four
+                                     // deviations, not below the configured one
+  double offset_clocks;              // board time - host time, filtered (clocks)
+  int watchdog_bitten, estop;        // EVENTS.wdog / EVENTS.estop seen
 } hwi_stats_t;
 
 typedef enum { HWI_IDLE = 0, HWI_RUN, HWI_DOWN } hwi_state_t;
@@ -148,6 +154,7 @@ typedef struct {
   int go_back;  // a reply said its packet was refused
   // Snapshot.
   int snap_armed;     // a packet arms it (sent or taken), not read back yet
+  int snap_fired;     // a reply showed it taken: the next packet reads it
   uint32_t snap_seq;  // that packet's SEQ
   hwi_boundary_t snap_boundary;
   // EVENTS' sticky bits (late, overflow, refused): each counted once when
@@ -175,15 +182,24 @@ int hwi_line_exponent(const int64_t* delta, uint32_t axes);
 uint32_t hwi_line_feed(int n, int64_t budget, uint32_t feed_w, uint32_t step_clocks, int* too_fast);
 
 // The link's timing from the largest round trip measured (rtt_ns, e.g. of 20
-// reads of TIME) and the servo period: the latency (three round trips plus
-// two periods, at least five periods), the periods before a packet is sent
-// again (two round trips, at least 4) and before the link is down (25 of
-// those, at least 100). A latency given (latency_ns > 0) is kept.
+// reads of TIME), the servo period and the wire's time of one period's
+// exchange (wire_ns: a UART's bytes, 0 on UDP): the latency (three round
+// trips, two periods and four exchanges on the wire, at least five
+// periods), the periods before a packet is sent again (two round trips and
+// two exchanges, at least 4) and before the link is down (25 of those, at
+// least 100). A latency given (latency_ns > 0) is kept.
 typedef struct {
   uint64_t lead_ns;  // the latency (hwi_config_t's boundary_lead_ns)
   uint32_t retry_periods, dead_periods;
 } hwi_link_timing_t;
-hwi_link_timing_t hwi_link_timing(uint64_t rtt_ns, uint64_t period_ns, uint64_t latency_ns);
+hwi_link_timing_t hwi_link_timing(uint64_t rtt_ns, uint64_t period_ns, uint64_t latency_ns,
+                                  uint64_t wire_ns);
+
+// The bytes of a period's packet carrying `commands` line commands for
+// `axes` joints (no settings, snapshot or EVENTS clear in it), and of the
+// reply to a packet reading the snapshot of `snap_axes` axes (0: none).
+size_t hwi_period_packet_bytes(uint32_t axes, uint32_t commands);
+size_t hwi_period_reply_bytes(uint32_t snap_axes);
 
 // Reads a board's ID registers (the words of hwi_id_reads, in order).
 size_t hwi_id_reads(uint32_t* addrs);

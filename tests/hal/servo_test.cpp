@@ -176,17 +176,22 @@ TEST(HalServo, FeedWordEndsTheLineWithinItsBudgetAtTheStepStagesRate) {
 // The latency and the retries from the round trip measured at load.
 TEST(HalServo, LinkTimingFollowsTheRoundTripMeasured) {
   const uint64_t ms = 1000000;
-  hwi_link_timing_t t = hwi_link_timing(ms / 4, ms, 0);  // a LAN: 0.25 ms
-  EXPECT_EQ(t.lead_ns, 5 * ms);                          // at least five periods
+  hwi_link_timing_t t = hwi_link_timing(ms / 4, ms, 0, 0);  // a LAN: 0.25 ms
+  EXPECT_EQ(t.lead_ns, 5 * ms);                             // at least five periods
   EXPECT_EQ(t.retry_periods, 4u);
   EXPECT_EQ(t.dead_periods, 100u);
-  t = hwi_link_timing(8 * ms, ms, 0);  // a slow link: 8 ms
-  EXPECT_EQ(t.lead_ns, 26 * ms);       // three round trips and two periods
-  EXPECT_EQ(t.retry_periods, 17u);     // two round trips, and one
+  t = hwi_link_timing(8 * ms, ms, 0, 0);  // a slow link: 8 ms
+  EXPECT_EQ(t.lead_ns, 26 * ms);          // three round trips and two periods
+  EXPECT_EQ(t.retry_periods, 17u);        // two round trips, and one
   EXPECT_EQ(t.dead_periods, 425u);
-  t = hwi_link_timing(8 * ms, ms, 20 * ms);  // given: kept
+  t = hwi_link_timing(8 * ms, ms, 20 * ms, 0);  // given: kept
   EXPECT_EQ(t.lead_ns, 20 * ms);
   EXPECT_EQ(t.retry_periods, 17u);
+  // A UART at 1 Mbaud: 0.3 ms round trips of small reads, 1.5 ms a period's
+  // exchange on the wire.
+  t = hwi_link_timing(300000, ms, 0, 1500000);
+  EXPECT_EQ(t.lead_ns, 8900000u);  // 3 x 0.3 + 2 x 1 + 4 x 1.5 ms
+  EXPECT_EQ(t.retry_periods, 4u);  // (0.6 + 3) / 1 + 1
 }
 
 TEST(HalServo, IdRefusesAProfileBuildAndTooManyJoints) {
@@ -301,6 +306,46 @@ TEST(HalServo, ALostPacketIsSentAgainWithTheOnesAfterIt) {
   EXPECT_EQ(pushes, 20);
   EXPECT_GT(s.stats.retransmits, 0u);
   EXPECT_EQ(s.stats.commands_taken, 20u);
+  EXPECT_EQ(s.state, HWI_RUN);
+}
+
+// A link slower than the retry measured at load (replies nine periods
+// late, the retry 4): the first packets are sent again, then the retry
+// follows the round trips measured (smoothed, plus four deviations) and no
+// copy is sent; every command is pushed once.
+TEST(HalServo, TheRetryFollowsTheRoundTripsAsTheyCome) {
+  hwi_servo_t s;
+  start_one_axis(&s);
+  Sent out;
+  GuardedBoard board;
+  std::vector<std::pair<int, size_t>> due;  // period, packet
+  uint64_t retransmits_at_100 = 0;
+  for (int k = 1; k <= 300; ++k) {
+    for (auto it = due.begin(); it != due.end();) {
+      if (it->first != k) {
+        ++it;
+        continue;
+      }
+      const std::vector<uint8_t> r = board.answer(out.packets[it->second]);
+      hwi_servo_reply(&s, r.data(), r.size(), k * 1000000LL);
+      it = due.erase(it);
+    }
+    const int64_t p[1] = {k};
+    const size_t before = out.packets.size();
+    ASSERT_GE(hwi_servo_period(&s, k * 1000000LL, p, Sent::send, &out), 0) << k;
+    for (size_t i = before; i < out.packets.size(); ++i) due.push_back({k + 9, i});
+    if (k == 100) retransmits_at_100 = s.stats.retransmits;
+  }
+  EXPECT_GT(s.stats.retransmits, 0u);  // before the first round trip was known
+  EXPECT_LE(s.stats.retransmits, 8u);
+  EXPECT_EQ(s.stats.retransmits, retransmits_at_100);  // none after
+  EXPECT_GE(s.stats.retry_periods, 10u);
+  EXPECT_GE(s.stats.commands_taken, 290u);
+  int pushes = 0;
+  for (const Decoded& d : board.taken)
+    for (auto [a, v] : d.writes)
+      if (a == motion(offsetof(motion_soc_regs_t, cmd_push))) ++pushes;
+  EXPECT_EQ(pushes, static_cast<int>(s.stats.commands_taken));
   EXPECT_EQ(s.state, HWI_RUN);
 }
 
