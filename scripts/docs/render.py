@@ -753,6 +753,47 @@ def r_linuxcnc_runs(_):
                   "passed"], rows) + ["", source(d)] + (["", *updates] if updates else [])
 
 
+def r_linuxcnc_trace(_):
+    """docs/linuxcnc.md: corners.ngc through LinuxCNC and the board, as
+    charts (Mermaid, drawn where the Markdown is read) from the run's trace
+    in docs/data/linuxcnc_sil.json."""
+    d = load("linuxcnc_sil.json")
+    r = next((r for r in d["runs"] if os.path.basename(r["program"]) == "corners.ngc" and
+              not r.get("fault") and not r.get("link", "").startswith("serial:") and r.get("trace")),
+             None)
+    if r is None:
+        fail("docs/data/linuxcnc_sil.json: no trace of corners.ngc over UDP")
+    tr = r["trace"]
+    xs = "[%s]" % ", ".join('"%.1f"' % t for t in tr["t_s"])
+    out = []
+    for axis in ("x", "y"):
+        cmd, brd = tr[axis + "_cmd"], tr[axis + "_board"]
+        out += ["```mermaid", "xychart-beta",
+                '    title "%s: LinuxCNC\'s lattice point and the board\'s step pins at the '
+                'boundaries"' % axis.upper(),
+                '    x-axis "board time (s)" %s' % xs,
+                '    y-axis "%s (steps)"' % axis.upper(),
+                "    line [%s]" % ", ".join(map(str, cmd)),
+                "    line [%s]" % ", ".join(map(str, brd)), "```", ""]
+    worst = tr["ferror_max"]
+    out += ["```mermaid", "xychart-beta",
+            '    title "Largest following error of any joint at the boundaries (steps)"',
+            '    x-axis "board time (s)" %s' % xs,
+            '    y-axis "steps" 0 --> %d' % max(1, max(worst)),
+            "    bar [%s]" % ", ".join(map(str, worst)), "```", "",
+            "<sub>%d samples of %s boundaries (%s at 0 error): in each chart the first line is "
+            "LinuxCNC's, the second the board's; the bars are the largest error at the "
+            "boundaries between two samples.</sub>" % (
+                len(tr["t_s"]), grp(r["boundaries_checked"]),
+                grp(r["boundaries_checked"] - r["boundaries_with_error"])),
+            "", source(d)]
+    again = [u for u in d.get("updates", []) if "corners.ngc" in u["programs"]]
+    if again:
+        out += ["", "<sub>Again: `corners.ngc` with `%s` on `%s`, %s.</sub>" % (
+            again[-1]["command"], again[-1]["commit"], again[-1]["date"])]
+    return out
+
+
 def r_linuxcnc_planner(_):
     """docs/linuxcnc.md: LinuxCNC's planner against ours on the same programs
     and machine (scripts/linuxcnc/planner_compare.py)."""
@@ -851,6 +892,7 @@ RENDERERS = {
     "linuxcnc-pins": ("sw/hal/hwinterp.comp", r_linuxcnc_pins),
     "linuxcnc-runs": ("docs/data/linuxcnc_sil.json", r_linuxcnc_runs),
     "linuxcnc-faults": ("docs/data/linuxcnc_sil.json", r_linuxcnc_faults),
+    "linuxcnc-trace": ("docs/data/linuxcnc_sil.json", r_linuxcnc_trace),
     "linuxcnc-planner": ("docs/data/linuxcnc_planner.json", r_linuxcnc_planner),
 }
 

@@ -64,7 +64,7 @@ fi
 "$root/.venv/bin/python3" - "$json" "$update" "${runs[@]}" <<'PY'
 import json, os, subprocess, sys, datetime, platform
 out, update, runs = sys.argv[1], sys.argv[2], sys.argv[3:]
-root = os.path.dirname(os.path.dirname(os.path.abspath(out)))
+root = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(out))))  # docs/data/X.json
 commit = subprocess.run(["git", "-C", root, "rev-parse", "--short", "HEAD"], capture_output=True, text=True).stdout.strip()
 new = []
 for r in runs:

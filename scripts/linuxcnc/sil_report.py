@@ -78,6 +78,31 @@ def position_before(clocks, pos, clock):
     return pos[i - 1] if i else 0
 
 
+def trace(run, target, clocks, pos, hz, series, joints, points=48):
+    """The run in `points` samples for the docs' charts: at evenly spaced
+    boundaries, the board time (s from the first), LinuxCNC's X and Y lattice
+    points and the board's, and the largest |following error| of any joint
+    at the boundaries since the sample before."""
+    if len(run) < 2 or not series:
+        return None
+    b0 = run[0]["boundary"]
+    ks = sorted({round(i * (len(run) - 2) / (points - 1)) for i in range(points)})
+    out = {"t_s": [], "x_cmd": [], "x_board": [], "y_cmd": [], "y_board": [], "ferror_max": []}
+    s, last_t = 0, None
+    for k in ks:
+        b = run[k + 1]["boundary"]
+        out["t_s"].append(round((b - b0) / hz, 3))
+        for j, name in zip(range(min(2, joints)), "xy"):
+            out[f"{name}_cmd"].append(target[k][j])
+            out[f"{name}_board"].append(position_before(clocks[j], pos[j], b))
+        worst = 0
+        while s < len(series) and series[s][0] <= b / hz:
+            worst = max(worst, max(abs(e) for e in series[s][1]))
+            s += 1
+        out["ferror_max"].append(worst)
+    return out
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--out", required=True)
@@ -237,6 +262,7 @@ def main():
               board["timing_violations"] == 0 and not report["linuxcnc_errors"] and
               lc.get("ended") == "program end" and checked > 0)
     report["passed"] = ok
+    report["trace"] = trace(run, target, clocks, pos, hz, series, joints)
     with open(os.path.join(out, "sil.json"), "w") as f:
         json.dump(report, f, indent=2)
     plot(out, run, scale, clocks, pos, hz, series, joints)
