@@ -332,6 +332,9 @@ uint64_t hwi_link_wire_ns(const hwi_link_t* l, size_t len) {
 void hwi_link_configure(const hwi_link_t* l, hwi_config_t* cfg) {
   cfg->window = l->serial ? 1 : 0;
   cfg->byte_ns = l->serial && l->baud ? 1e10 / l->baud : 0;
+  // On the UART a byte spoilt spoils its frame: a backlog goes in packets
+  // of a few commands (at most about 420 bytes), not in one lost whole.
+  cfg->max_commands = l->serial ? HWI_UART_COMMANDS : 0;
 }
 
 uint64_t hwi_link_period_wire_ns(const hwi_link_t* l, uint32_t axes) {

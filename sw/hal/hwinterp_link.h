@@ -29,8 +29,9 @@ extern "C" {
 
 #define HWI_DEFAULT_UDP_PORT 1234
 #define HWI_DEFAULT_BAUD 1000000
-#define HWI_MAX_FRAME 2048  // a received frame's bytes, the CRC included (framing.py's MAX_FRAME)
-#define HWI_MIN_FRAME 12    // an Etherbone header and a record header
+#define HWI_MAX_FRAME 2048   // a received frame's bytes, the CRC included (framing.py's MAX_FRAME)
+#define HWI_MIN_FRAME 12     // an Etherbone header and a record header
+#define HWI_UART_COMMANDS 8  // line commands a packet at most on a UART
 
 // CLOCK_MONOTONIC in nanoseconds.
 int64_t hwi_now_ns(void);
@@ -89,8 +90,9 @@ int hwi_link_recv(hwi_link_t* l, uint8_t* buf, size_t cap, int64_t timeout_us);
 // byte, escapes not counted); 0 on UDP.
 uint64_t hwi_link_wire_ns(const hwi_link_t* l, size_t len);
 
-// What the link asks of the servo's settings: one packet unanswered and
-// the wire's time a byte on the UART; nothing on UDP.
+// What the link asks of the servo's settings: on the UART one packet
+// unanswered, the wire's time a byte, at most HWI_UART_COMMANDS commands a
+// packet; nothing on UDP.
 void hwi_link_configure(const hwi_link_t* l, hwi_config_t* cfg);
 
 // The wire's time of one period's exchange: a packet of one line command

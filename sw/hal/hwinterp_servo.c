@@ -358,7 +358,9 @@ static hwi_packet_t* build_packet(hwi_servo_t* s, int64_t host_ns) {
   // and EVENTS' chunks and the reads.
   const uint32_t reserve = 2 + 4 + 2 + 1;
   uint32_t taken = 0;
-  while (taken < s->outbox_len && st.n + line_words(s) + reserve + nr <= EB_MAX_WORDS)
+  const uint32_t most = s->cfg.max_commands ? s->cfg.max_commands : HWI_OUTBOX;
+  while (taken < s->outbox_len && taken < most &&
+         st.n + line_words(s) + reserve + nr <= EB_MAX_WORDS)
     put_line(s, &st, &s->outbox[taken++]);
   memmove(s->outbox, s->outbox + taken, sizeof(hwi_line_t) * (s->outbox_len - taken));
   s->outbox_len -= taken;
@@ -503,7 +505,11 @@ static void take_reads(hwi_servo_t* s, const hwi_packet_t* p, const uint32_t* wo
     }
     const double want =
         ceil((s->stats.rtt_ns_smooth + 4 * s->stats.rtt_ns_var) / (double)s->cfg.period_ns) + 1;
-    const double most = (double)(s->cfg.dead_periods / 2);
+    // At most half the latency: a packet lost once is sent again in time
+    // for its commands' boundaries.
+    const uint64_t half_lead = s->cfg.boundary_lead_ns / s->cfg.period_ns / 2;
+    const uint64_t cap = half_lead < s->cfg.dead_periods / 2 ? half_lead : s->cfg.dead_periods / 2;
+    const double most = (double)(cap > s->cfg.retry_periods ? cap : s->cfg.retry_periods);
     s->stats.retry_periods = want < (double)s->cfg.retry_periods ? s->cfg.retry_periods
                              : want > most                       ? (uint32_t)most
                                                                  : (uint32_t)want;
@@ -573,6 +579,10 @@ int hwi_servo_reply(hwi_servo_t* s, const uint8_t* data, size_t len, int64_t hos
   s->stats.bytes_received += len;
   if (len > s->stats.bytes_received_max) s->stats.bytes_received_max = len;
   const uint32_t expect = words[0];
+  if ((int32_t)(expect - s->expect) < 0) {  // read before a reply already taken: old news
+    ++s->stats.stale_replies;
+    return 0;
+  }
   const uint32_t taken = expect - s->expect;  // packets of the window the guard has taken
   if (taken > s->in_flight) {
     s->state = HWI_DOWN;

@@ -49,7 +49,7 @@ extern "C" {
 
 #define HWI_MAX_AXES 6
 #define HWI_RING 64          // boundaries remembered (for the snapshot's check)
-#define HWI_OUTBOX 16        // commands waiting for a packet
+#define HWI_OUTBOX 64        // commands waiting for a packet (full: the link is down)
 #define HWI_MAX_PACKET 1100  // bytes: one Etherbone record of at most 248 words
 #define HWI_WINDOW 8         // packets unanswered at most
 
@@ -71,6 +71,7 @@ typedef struct {
   uint32_t window;              // packets unanswered at most: 1..HWI_WINDOW (0: HWI_WINDOW)
   double byte_ns;               // a byte's time on the wire (a UART's; 0: none): a packet's
                                 // retry waits for its and its reply's bytes too
+  uint32_t max_commands;        // line commands a packet at most (0: as many as fit)
 } hwi_config_t;
 
 // Figures the driver reports (HAL pins, the closing JSON).

@@ -142,7 +142,8 @@ static void wait_board(hwi_link_t* l, hwi_servo_t* s, uint32_t session, int64_t 
   uint8_t buf[HWI_MAX_PACKET];
   while (*known < next) {
     if (l->serial && s->state == HWI_RUN && s->in_flight) {
-      // The bridge runs one frame at a time: the servo's reply first.
+      // The bridge runs one frame at a time: the servo's reply first (none
+      // within 200 ms: lost; TIME is read).
       const int n = hwi_link_recv(l, buf, sizeof buf, 200000);
       if (n > 0 && hwi_servo_reply(s, buf, (size_t)n, *known) == 1) {
         const int64_t t = clocks_to_ns(s->stats.board_time, hz);
@@ -212,7 +213,7 @@ int main(int argc, char** argv) {
   cfg.dir_setup_ns = step[2];
   cfg.dir_hold_ns = step[3];
   cfg.watchdog_period_ns = (uint64_t)period_ns * 200;
-  cfg.retry_periods = 8;
+  cfg.retry_periods = 8;  // until the link's timing is measured, below
   cfg.dead_periods = 400;
   hwi_link_configure(&link, &cfg);
   static hwi_servo_t s;
@@ -230,10 +231,12 @@ int main(int argc, char** argv) {
         use_board ? read_board_ns(&link, NULL, session, hz, 0) - b0 : hwi_now_ns() - w0;
     if ((double)rtt > rtt_max) rtt_max = (double)rtt;
   }
-  cfg.boundary_lead_ns =
+  const hwi_link_timing_t timing =
       hwi_link_timing((uint64_t)rtt_max, (uint64_t)period_ns, (uint64_t)latency_us * 1000,
-                      hwi_link_period_wire_ns(&link, axes))
-          .lead_ns;
+                      hwi_link_period_wire_ns(&link, axes));
+  cfg.boundary_lead_ns = timing.lead_ns;
+  cfg.retry_periods = timing.retry_periods;
+  cfg.dead_periods = timing.dead_periods;
   // The run again from the board's position, its time paired with the host's now.
   int64_t origin[HWI_MAX_AXES];
   memcpy(origin, s.lattice, sizeof origin);

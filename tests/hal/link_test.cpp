@@ -161,6 +161,7 @@ TEST(HalLink, ASerialLinkFramesWhatItSendsAndReceives) {
   hwi_link_configure(&l, &cfg);
   EXPECT_EQ(cfg.window, 1u);
   EXPECT_DOUBLE_EQ(cfg.byte_ns, 40000.0);
+  EXPECT_EQ(cfg.max_commands, static_cast<uint32_t>(HWI_UART_COMMANDS));
   hwi_link_close(&l);
   close(master);
 }
@@ -193,6 +194,7 @@ TEST(HalLink, BadUrisAreRefusedByName) {
   hwi_config_t cfg{};
   hwi_link_configure(&l, &cfg);
   EXPECT_EQ(cfg.window, 0u);
+  EXPECT_EQ(cfg.max_commands, 0u);
   hwi_link_close(&l);
 }
 

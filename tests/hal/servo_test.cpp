@@ -310,12 +310,18 @@ TEST(HalServo, ALostPacketIsSentAgainWithTheOnesAfterIt) {
 }
 
 // A link slower than the retry measured at load (replies nine periods
-// late, the retry 4): the first packets are sent again, then the retry
-// follows the round trips measured (smoothed, plus four deviations) and no
-// copy is sent; every command is pushed once.
+// late, the retry 4, the latency 20 periods): the first packets are sent
+// again, then the retry follows the round trips measured (smoothed, plus
+// four deviations; at most half the latency) and no copy is sent; every
+// command is pushed once.
 TEST(HalServo, TheRetryFollowsTheRoundTripsAsTheyCome) {
   hwi_servo_t s;
-  start_one_axis(&s);
+  hwi_config_t c = config(1);
+  c.boundary_lead_ns = 20 * c.period_ns;
+  c.dead_periods = 100;
+  const hwi_board_id_t id = board_id();
+  const int64_t origin[1] = {0};
+  hwi_servo_start(&s, &c, &id, 3, 0, origin, 0, 0);
   Sent out;
   GuardedBoard board;
   std::vector<std::pair<int, size_t>> due;  // period, packet
@@ -339,7 +345,7 @@ TEST(HalServo, TheRetryFollowsTheRoundTripsAsTheyCome) {
   EXPECT_GT(s.stats.retransmits, 0u);  // before the first round trip was known
   EXPECT_LE(s.stats.retransmits, 8u);
   EXPECT_EQ(s.stats.retransmits, retransmits_at_100);  // none after
-  EXPECT_GE(s.stats.retry_periods, 10u);
+  EXPECT_EQ(s.stats.retry_periods, 10u);               // half the latency
   EXPECT_GE(s.stats.commands_taken, 290u);
   int pushes = 0;
   for (const Decoded& d : board.taken)
@@ -347,6 +353,36 @@ TEST(HalServo, TheRetryFollowsTheRoundTripsAsTheyCome) {
       if (a == motion(offsetof(motion_soc_regs_t, cmd_push))) ++pushes;
   EXPECT_EQ(pushes, static_cast<int>(s.stats.commands_taken));
   EXPECT_EQ(s.state, HWI_RUN);
+}
+
+// A reply that comes late, after a later one moved EXPECT on (a packet
+// refused, its reply delayed past the retry that got its predecessor
+// through), is old news: dropped, the link stays up.
+TEST(HalServo, AReplyBehindTheGuardsExpectIsDroppedNotTheLink) {
+  hwi_servo_t s;
+  start_one_axis(&s);
+  Sent out;
+  GuardedBoard board;
+  const int64_t p1[1] = {1}, p2[1] = {2};
+  ASSERT_EQ(hwi_servo_period(&s, 1000000, p1, Sent::send, &out), 1);  // SEQ 0: lost
+  ASSERT_EQ(hwi_servo_period(&s, 2000000, p2, Sent::send, &out), 1);  // SEQ 1
+  const std::vector<uint8_t> refused = board.answer(out.packets[1]);  // EXPECT 0: held back
+  int k = 3;
+  while (s.stats.retransmits == 0 && k < 20) {  // the timeout sends SEQ 0 again
+    const int64_t p[1] = {2};
+    hwi_servo_period(&s, k++ * 1000000LL, p, Sent::send, &out);
+  }
+  ASSERT_EQ(s.stats.retransmits, 1u);
+  size_t again = 2;  // SEQ 0 sent again
+  while (decode(out.packets[again].data(), out.packets[again].size()).seq != 0) ++again;
+  const std::vector<uint8_t> r0 = board.answer(out.packets[again]);  // taken: EXPECT 1
+  ASSERT_EQ(hwi_servo_reply(&s, r0.data(), r0.size(), k * 1000000LL), 1);
+  ASSERT_EQ(s.expect, 1u);
+  const uint32_t waiting = s.in_flight;  // SEQ 1 and the later ones
+  ASSERT_GE(waiting, 1u);
+  EXPECT_EQ(hwi_servo_reply(&s, refused.data(), refused.size(), k * 1000000LL), 0);
+  EXPECT_EQ(s.state, HWI_RUN);
+  EXPECT_EQ(s.in_flight, waiting);
 }
 
 // No reply at all: the link is down after dead_periods, and no more
