@@ -382,6 +382,44 @@ TEST(HalLink, OnAUartOnePacketIsUnansweredAndTheNextCarriesTheCommandsWaiting) {
   EXPECT_GT(s.stats.boundary_checks + s.stats.boundary_misses, 0u);  // the snapshot read back
 }
 
+// A backlog on the UART goes in packets of at most max_commands commands,
+// in order, each once.
+TEST(HalLink, ABacklogGoesInPacketsOfAtMostMaxCommands) {
+  hwi_config_t c = uart_config(2);
+  c.max_commands = 3;
+  c.retry_periods = 50;  // no retry in this test
+  c.dead_periods = 200;
+  c.boundary_lead_ns = 100 * c.period_ns;
+  hwi_servo_t s;
+  start(&s, c);
+  Sent out;
+  Board board;
+  int k = 1;
+  for (; k <= 10; ++k) {  // the first packet's reply is held back: 9 commands wait
+    const int64_t p[2] = {k, 0};
+    hwi_servo_period(&s, k * 1000000LL, p, Sent::send, &out);
+  }
+  ASSERT_EQ(out.packets.size(), 1u);
+  for (; k <= 20; ++k) {  // then every packet is answered in the next period
+    const Bytes r = board.answer(out.packets.back());
+    ASSERT_EQ(hwi_servo_reply(&s, r.data(), r.size(), k * 1000000LL), 1) << k;
+    const int64_t p[2] = {k, 0};
+    ASSERT_EQ(hwi_servo_period(&s, k * 1000000LL, p, Sent::send, &out), 1) << k;
+  }
+  std::vector<int> per_packet;
+  int64_t x = 0;
+  for (const Decoded& d : board.taken) {
+    per_packet.push_back(d.pushes());
+    for (auto [a, v] : d.writes)
+      if (a == motion(offsetof(motion_soc_regs_t, cmd_delta0))) x += static_cast<int32_t>(v);
+  }
+  // 1; then 3 a packet while the backlog of 10 drains (a period's command
+  // joining it each time), then 1 a period. The last packet (period 20) is
+  // not answered yet.
+  EXPECT_EQ(per_packet, (std::vector<int>{1, 3, 3, 3, 3, 2, 1, 1, 1, 1}));
+  EXPECT_EQ(x, 19);  // every command once: the X lattice went 0 .. 19 in steps of 1
+}
+
 // A packet not answered is sent again after retry_periods and its and its
 // reply's bytes on the wire: at 1 Mbaud the first packet (its settings
 // too) and reply take more than a period.
