@@ -10,8 +10,9 @@
 #   --clock-hz HZ  simulate the board's gateware at HZ instead of its own
 #                  clock (a slower clock simulates more board time a second);
 #                  a clock the build does not hold yet is added to it
-#                  (HWINTERP_EXTRA_BOARD_SIMS) and built first, about two
-#                  minutes
+#                  (HWINTERP_EXTRA_BOARD_SIMS) and built first: about ten
+#                  minutes on 2 cores, since the board models share their
+#                  library with the cores' and most of the tree recompiles
 #   --baud B       with --clock-hz on a UART board: its rate (at least 8
 #                  clocks a bit; default the board's)
 #   --no-profile   the build without the feed profile (added, as above, when
