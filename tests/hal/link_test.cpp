@@ -21,10 +21,11 @@ extern "C" {
 #include "../../sw/board_regs.h"
 #include "hwinterp_link.h"
 }
+#include "servo_fixture.h"
 
 namespace {
 
-using Bytes = std::vector<uint8_t>;
+using namespace hal_test;
 
 // A packet of `n` bytes holding both of SLIP's special bytes.
 Bytes packet(size_t n) {
@@ -200,96 +201,6 @@ TEST(HalLink, BadUrisAreRefusedByName) {
 
 // --- the servo on a UART ---------------------------------------------------------
 
-uint32_t be32(const uint8_t* p) {
-  return uint32_t{p[0]} << 24 | uint32_t{p[1]} << 16 | uint32_t{p[2]} << 8 | p[3];
-}
-
-constexpr uint32_t kMotion = offsetof(hwinterp_board_t, motion);
-uint32_t motion(size_t off) { return static_cast<uint32_t>(kMotion + off); }
-
-// A guarded packet: its SEQ, its writes (address, value), its reads, its tag.
-struct Decoded {
-  uint32_t seq = 0, tag = 0;
-  std::vector<std::pair<uint32_t, uint32_t>> writes;
-  std::vector<uint32_t> reads;
-  int pushes() const {
-    int n = 0;
-    for (auto [a, v] : writes) n += a == motion(offsetof(motion_soc_regs_t, cmd_push));
-    return n;
-  }
-  bool arms() const {
-    for (auto [a, v] : writes)
-      if (a == motion(offsetof(motion_soc_regs_t, snap_at))) return true;
-    return false;
-  }
-};
-
-Decoded decode(const Bytes& b) {
-  Decoded d;
-  const uint32_t nw = b[10], nr = b[11];
-  const uint8_t* q = b.data() + 16;
-  std::vector<uint32_t> stream;
-  for (uint32_t i = 0; i < nw; ++i, q += 4) stream.push_back(be32(q));
-  d.seq = stream.at(0);
-  for (size_t i = 1; i < stream.size();) {
-    const uint32_t count = stream[i] >> 24, word = stream[i] & 0xFFFFFF;
-    for (uint32_t k = 0; k < count; ++k) d.writes.push_back({4 * (word + k), stream.at(i + 1 + k)});
-    i += 1 + count;
-  }
-  d.tag = be32(q);
-  q += 4;
-  for (uint32_t i = 0; i < nr; ++i, q += 4) d.reads.push_back(be32(q));
-  return d;
-}
-
-// The board: runs packets in SEQ order, answers reads from its registers;
-// a snapshot armed fires at once when `fires`.
-struct Board {
-  uint32_t expect = 0;
-  bool fires = false;
-  std::vector<std::pair<uint32_t, uint32_t>> regs;
-  std::vector<Decoded> taken;
-  uint32_t reg(uint32_t a) const {
-    for (auto [k, v] : regs)
-      if (k == a) return v;
-    return 0;
-  }
-  void set(uint32_t a, uint32_t v) {
-    for (auto& [k, w] : regs)
-      if (k == a) {
-        w = v;
-        return;
-      }
-    regs.push_back({a, v});
-  }
-  Bytes answer(const Bytes& pkt) {
-    Decoded d = decode(pkt);
-    if (d.seq == expect) {
-      ++expect;
-      for (auto [a, v] : d.writes) set(a, v);
-      if (fires && d.arms())
-        set(motion(offsetof(motion_soc_regs_t, events)), 1u << MOTION_SOC_REGS__EVENTS__SNAP_bp);
-      taken.push_back(d);
-    }
-    Bytes r = {0x4E, 0x6F, 0x10, 0x44, 0, 0, 0, 0, 0, 0x0F, static_cast<uint8_t>(d.reads.size()),
-               0};
-    auto put = [&](uint32_t v) {
-      for (int s = 24; s >= 0; s -= 8) r.push_back(static_cast<uint8_t>(v >> s));
-    };
-    put(d.tag);
-    for (uint32_t a : d.reads) put(a == offsetof(hwinterp_board_t, link.seq) ? expect : reg(a));
-    return r;
-  }
-};
-
-struct Sent {
-  std::vector<Bytes> packets;
-  static int send(void* ctx, const uint8_t* data, size_t len) {
-    static_cast<Sent*>(ctx)->packets.emplace_back(data, data + len);
-    return 0;
-  }
-};
-
 hwi_config_t uart_config(uint32_t axes) {
   hwi_config_t c{};
   c.axes = axes;
@@ -326,7 +237,7 @@ TEST(HalLink, OnAUartOnePacketIsUnansweredAndTheNextCarriesTheCommandsWaiting) {
   hwi_servo_t s;
   start(&s, uart_config(4));
   Sent out;
-  Board board;
+  GuardedBoard board;
   board.fires = true;
   // The board answers each packet two periods after it was sent.
   std::vector<std::pair<int, size_t>> due;  // period, packet
@@ -337,7 +248,8 @@ TEST(HalLink, OnAUartOnePacketIsUnansweredAndTheNextCarriesTheCommandsWaiting) {
     const int64_t host = k * 1000000LL;
     for (auto it = due.begin(); it != due.end();)
       if (it->first == k) {
-        board.set(motion(offsetof(motion_soc_regs_t, time_lo)), static_cast<uint32_t>(host / 1000));
+        board.regs[motion(offsetof(motion_soc_regs_t, time_lo))] =
+            static_cast<uint32_t>(host / 1000);
         const Bytes r = board.answer(out.packets[it->second]);
         if (r.size() == hwi_period_reply_bytes(0)) ++replies_plain;
         if (r.size() == hwi_period_reply_bytes(4)) ++replies_snap;
@@ -393,7 +305,7 @@ TEST(HalLink, ABacklogGoesInPacketsOfAtMostMaxCommands) {
   hwi_servo_t s;
   start(&s, c);
   Sent out;
-  Board board;
+  GuardedBoard board;
   int k = 1;
   for (; k <= 10; ++k) {  // the first packet's reply is held back: 9 commands wait
     const int64_t p[2] = {k, 0};
